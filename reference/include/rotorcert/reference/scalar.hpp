@@ -1,0 +1,52 @@
+// Scalar types of the reference.
+//
+// The reference is generic over its scalar type. Two instantiations matter:
+//   Real   = mpfr::mpreal at >= 256 bits: the oracle that defines expected results (NUM-2);
+//   double : the same textbook code in binary64, used to show how far naive double drifts.
+// Everything below uses unqualified sqrt/sin/cos/atan2/... so that argument-dependent lookup
+// picks MPFR's correctly rounded functions for mpreal and <cmath> for double.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <mpreal.h>
+
+namespace rotorcert::ref {
+
+using Real = mpfr::mpreal;
+
+/// NUM-2: the reference works with at least this many significand bits.
+inline constexpr int kReferenceBits = 256;
+
+/// Sets the default MPFR precision for every Real created afterwards on this thread.
+/// Call once at start-up (tests do it in a global environment, tools in main()).
+inline void use_reference_precision(int bits = kReferenceBits) {
+  mpfr::mpreal::set_default_prec(bits);
+}
+
+template <class T> struct ScalarTraits;
+
+template <> struct ScalarTraits<double> {
+  static double pi() { return 3.14159265358979323846264338327950288; }
+  static double nan() { return std::numeric_limits<double>::quiet_NaN(); }
+  static bool is_nan(double x) { return std::isnan(x); }
+  static bool is_finite(double x) { return std::isfinite(x); }
+  static double from_double(double x) { return x; }
+  static double to_double(double x) { return x; }
+  /// Smallest relative step that this type resolves: the unit for "exact" identities.
+  static double epsilon() { return std::numeric_limits<double>::epsilon(); }
+};
+
+template <> struct ScalarTraits<Real> {
+  static Real pi() { return mpfr::const_pi(); }
+  static Real nan() { Real x; mpfr_set_nan(x.mpfr_ptr()); return x; }
+  static bool is_nan(const Real& x) { return mpfr::isnan(x); }
+  static bool is_finite(const Real& x) { return mpfr::isfinite(x); }
+  static Real from_double(double x) { return Real(x); }  // exact: precision >= 53
+  static double to_double(const Real& x) { return x.toDouble(); }
+  static Real epsilon() { return mpfr::machine_epsilon(); }
+};
+
+}  // namespace rotorcert::ref
