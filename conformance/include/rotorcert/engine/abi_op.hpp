@@ -1,0 +1,72 @@
+// The operations of the implementation ABI (impl_abi.h), described as data: their arrays, how
+// each output is measured, which reference function defines them, and how to call an
+// implementation's table. Everything the engine does per operation goes through this table.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <rotorcert/impl_abi.h>
+#include <rotorcert/reference/result.hpp>
+#include <rotorcert/reference/scalar.hpp>
+
+namespace rotorcert::engine {
+
+using ref::Real;
+
+/// How an output array is compared with the reference (SPEC section 3).
+enum class Measure {
+  rotation,       // quaternion: METRIC-1 radians (sign-free)
+  unit_rotation,  // quaternion that must be unit: METRIC-1 and METRIC-6
+  vector,         // METRIC-3, relative to |reference|
+  point,          // |p - p_ref| / max(1, |inputs|): rigid operations (DQ-3, AXIS-1, SKIN-*)
+  bivector,       // METRIC-5, radians (logs)
+  matrix,         // METRIC-4
+  angle,          // absolute radians
+  scalar,         // relative, absolute at 0
+  rigid,          // dual quaternion: METRIC-7, rotation and translation
+};
+
+struct Array {
+  std::string name;
+  int stride = 1;              // scalars per element (per influence for n-way inputs)
+  bool per_influence = false;  // n-way input: k elements of `stride` per case
+  Measure measure = Measure::scalar;  // outputs only
+};
+
+/// One case's values: one vector of exact values per array (inputs or outputs), in ABI layout.
+using Values = std::vector<std::vector<Real>>;
+
+struct ReferenceResult {
+  ref::Status status = ref::Status::ok;
+  Values outputs;
+};
+
+struct AbiOp {
+  std::string name;  // the rc_ops slot, e.g. "slerp"
+  std::vector<Array> inputs, outputs;
+  bool nway = false;  // takes k influences per element
+  /// The reference on one case's exact inputs (256-bit MPFR).
+  std::function<ReferenceResult(const Values& inputs, std::size_t k)> reference;
+  /// The length scale of a case for Measure::point (max(1, |p|, |t|, ...)).
+  std::function<Real(const Values& inputs, std::size_t k)> scale;
+};
+
+/// Every op of ABI v1, in the order of rc_ops.
+const std::vector<AbiOp>& abi_ops();
+/// The op of that name, or nullptr.
+const AbiOp* find_abi_op(const std::string& name);
+
+/// Whether the table has that op (non-NULL pointer).
+bool supports(const rc_impl& table, const std::string& op);
+
+/// Calls op on n elements through the table. `in`/`out` hold one pointer per input/output
+/// array of the op, of the table's scalar type; status has n bytes. Returns the function's
+/// return value (0 = ran), or -1 if the table lacks the op.
+int call(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
+         const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status);
+
+}  // namespace rotorcert::engine

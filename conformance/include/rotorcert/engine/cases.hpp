@@ -1,0 +1,69 @@
+// Test cases of the differential engine: for each clause, which ABI operation(s) judge it and on
+// which inputs. Inputs are exact values already representable in the implementation's format,
+// so the reference is evaluated on exactly what the implementation was given.
+//
+// Sources, per clause: the inputs of the clause's worked examples (spec/examples.json, rounded
+// to the format), and families of fixed reference vectors drawn from a seeded generator (same
+// seed, same cases): random rotations, near-identity and near-antipodal pairs, exact ties,
+// t outside [0, 1], non-unit scales, subnormals, NaN and infinities, bad weight sets.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <rotorcert/engine/abi_op.hpp>
+#include <rotorcert/reference/metrics.hpp>
+#include <rotorcert/spec/spec.hpp>
+
+namespace rotorcert::engine {
+
+struct Case {
+  Values inputs;       // one vector per input array of the op, element values in ABI layout
+  std::size_t k = 0;   // influences per element (n-way ops), else 0
+  std::string label;   // what it probes: "random", "near-antipodal", "example EX-SLERP-1-a", ...
+};
+
+struct Check {
+  std::string op;  // ABI op
+  std::vector<Case> cases;
+  /// How the worst case is judged. Empty: by the clause's tolerance class. Otherwise the name of
+  /// the class to use instead (an edge clause applied to an op with a looser class).
+  std::string tolerance;
+  /// exp(log q) = q through the implementation (EXP-2), instead of a reference comparison.
+  bool log_exp_round_trip = false;
+};
+
+struct CaseOptions {
+  std::uint64_t seed = 1;
+  int cases_per_family = 32;
+  bool worked_examples = true;
+};
+
+/// The checks that judge `clause` for an implementation of `format` that supports the ABI ops
+/// for which `supported(op)` is true. Empty when the clause has no implementation-visible check
+/// (Meta clauses) or the implementation supports none of its ops.
+template <class Supported>
+std::vector<Check> checks_for_clause(const spec::Spec& spec, const std::string& clause, ref::Format format,
+                                     const CaseOptions& options, Supported supported);
+
+/// Non-template core of checks_for_clause.
+std::vector<Check> checks_for_clause_impl(const spec::Spec& spec, const std::string& clause, ref::Format format,
+                                          const CaseOptions& options, const std::vector<std::string>& supported_ops);
+
+/// The ABI ops that can judge `clause` at all (whether or not an implementation supports them).
+std::vector<std::string> ops_for_clause(const std::string& clause);
+
+/// x rounded to the nearest value of the format (binary32 or binary64), as an exact Real.
+Real round_to(ref::Format format, const Real& x);
+
+template <class Supported>
+std::vector<Check> checks_for_clause(const spec::Spec& spec, const std::string& clause, ref::Format format,
+                                     const CaseOptions& options, Supported supported) {
+  std::vector<std::string> ops;
+  for (const std::string& op : ops_for_clause(clause))
+    if (supported(op)) ops.push_back(op);
+  return checks_for_clause_impl(spec, clause, format, options, ops);
+}
+
+}  // namespace rotorcert::engine

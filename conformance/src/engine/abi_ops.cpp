@@ -1,0 +1,249 @@
+#include <rotorcert/engine/abi_op.hpp>
+
+#include <algorithm>
+#include <span>
+
+#include <rotorcert/reference/metrics.hpp>
+#include <rotorcert/reference/rigid_ops.hpp>
+#include <rotorcert/reference/rotation_ops.hpp>
+
+namespace rotorcert::engine {
+namespace {
+
+using Quat = ref::Quaternion<Real>;
+using V3 = ref::Vec3<Real>;
+using DQ = ref::DualQuaternion<Real>;
+namespace clause = ref::clause;
+
+// ---- ABI layout <-> reference types -------------------------------------------------------
+
+Quat quat(const std::vector<Real>& a, std::size_t i = 0) { return {a[i * 4 + 3], a[i * 4], a[i * 4 + 1], a[i * 4 + 2]}; }
+V3 vec3(const std::vector<Real>& a, std::size_t i = 0) { return {a[i * 3], a[i * 3 + 1], a[i * 3 + 2]}; }
+DQ dq(const std::vector<Real>& a, std::size_t i = 0) {
+  return {{a[i * 8 + 3], a[i * 8], a[i * 8 + 1], a[i * 8 + 2]}, {a[i * 8 + 7], a[i * 8 + 4], a[i * 8 + 5], a[i * 8 + 6]}};
+}
+ref::Mat3<Real> mat3(const std::vector<Real>& a) {
+  ref::Mat3<Real> m;
+  std::copy(a.begin(), a.begin() + 9, m.begin());
+  return m;
+}
+std::vector<Quat> quats(const std::vector<Real>& a, std::size_t k) {
+  std::vector<Quat> r;
+  for (std::size_t i = 0; i < k; ++i) r.push_back(quat(a, i));
+  return r;
+}
+std::vector<V3> vec3s(const std::vector<Real>& a, std::size_t k) {
+  std::vector<V3> r;
+  for (std::size_t i = 0; i < k; ++i) r.push_back(vec3(a, i));
+  return r;
+}
+std::vector<DQ> dqs(const std::vector<Real>& a, std::size_t k) {
+  std::vector<DQ> r;
+  for (std::size_t i = 0; i < k; ++i) r.push_back(dq(a, i));
+  return r;
+}
+
+std::vector<Real> flat(const Quat& q) { return {q.x, q.y, q.z, q.w}; }
+std::vector<Real> flat(const V3& v) { return {v[0], v[1], v[2]}; }
+std::vector<Real> flat(const DQ& d) {
+  return {d.real.x, d.real.y, d.real.z, d.real.w, d.dual.x, d.dual.y, d.dual.z, d.dual.w};
+}
+std::vector<Real> flat(const ref::Mat3<Real>& m) { return {m.begin(), m.end()}; }
+std::vector<Real> flat(const Real& s) { return {s}; }
+
+template <class V>
+ReferenceResult one(const ref::Result<V>& r) {
+  return {r.status, {flat(r.value)}};
+}
+
+Real length(const V3& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+Real length_of(const std::vector<Real>& a, std::size_t i) { return length(vec3(a, i)); }
+
+/// max(1, |p|, |t|) of a dual quaternion input and a point (DQ-3).
+Real rigid_scale(const DQ& d, const V3& p) {
+  Real s = std::max(Real(1), length(p));
+  if (ref::finite(d) && !ref::is_zero(d.real)) s = std::max(s, length(ref::clause::dual_quaternion_translation(d)));
+  return s;
+}
+
+Real unit_scale(const Values&, std::size_t) { return Real(1); }
+
+std::vector<AbiOp> build() {
+  const Array q{"q", 4}, a{"a", 4}, b{"b", 4}, v{"v", 3}, t{"t", 1}, m{"m", 9}, da{"a", 8}, db{"b", 8}, d{"d", 8};
+  auto out = [](const char* name, int stride, Measure measure) { return Array{name, stride, false, measure}; };
+  auto influences = [](const char* name, int stride) { return Array{name, stride, true, Measure::scalar}; };
+  std::vector<AbiOp> ops;
+  auto add = [&](AbiOp op) {
+    if (!op.scale) op.scale = unit_scale;
+    ops.push_back(std::move(op));
+  };
+
+  add({"normalize", {q}, {out("out_q", 4, Measure::unit_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::NORM_1_normalize(quat(in[0]))); }, {}});
+  add({"compose", {a, b}, {out("out_q", 4, Measure::rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::COMPOSE_1_compose(quat(in[0]), quat(in[1]))); }, {}});
+  add({"inverse", {q}, {out("out_q", 4, Measure::rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::INV_1_inverse(quat(in[0]))); }, {}});
+  add({"apply_vector", {q, v}, {out("out_v", 3, Measure::vector)}, false,
+       [](const Values& in, std::size_t) { return one(clause::APPLY_1_apply_vector(quat(in[0]), vec3(in[1]))); }, {}});
+  add({"apply_bivector", {q, Array{"b", 3}}, {out("out_b", 3, Measure::vector)}, false,
+       [](const Values& in, std::size_t) { return one(clause::APPLY_2_apply_bivector(quat(in[0]), vec3(in[1]))); }, {}});
+  add({"apply_trivector", {q, Array{"s", 1}}, {out("out_s", 1, Measure::scalar)}, false,
+       [](const Values& in, std::size_t) { return one(clause::APPLY_3_apply_trivector(quat(in[0]), in[1][0])); }, {}});
+  add({"to_matrix", {q}, {out("out_m", 9, Measure::matrix)}, false,
+       [](const Values& in, std::size_t) { return one(clause::MAT_1_to_matrix(quat(in[0]))); }, {}});
+  add({"from_matrix", {m}, {out("out_q", 4, Measure::unit_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::MAT_2_from_matrix(mat3(in[0]))); }, {}});
+  add({"to_axis_angle", {q}, {out("out_angle", 1, Measure::angle), out("out_axis", 3, Measure::vector)}, false,
+       [](const Values& in, std::size_t) {
+         const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));
+         return ReferenceResult{r.status, {flat(r.value.angle), flat(r.value.axis)}};
+       }, {}});
+  add({"from_axis_angle", {Array{"angle", 1}, Array{"axis", 3}}, {out("out_q", 4, Measure::unit_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::AXANG_2_from_axis_angle(in[0][0], vec3(in[1]))); }, {}});
+  add({"log", {q}, {out("out_v", 3, Measure::bivector)}, false,
+       [](const Values& in, std::size_t) { return one(clause::LOG_1_log(quat(in[0]))); }, {}});
+  add({"exp", {v}, {out("out_q", 4, Measure::unit_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::EXP_1_exp(vec3(in[0]))); }, {}});
+  add({"slerp", {a, b, t}, {out("out_q", 4, Measure::unit_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::SLERP_1_slerp(quat(in[0]), quat(in[1]), in[2][0])); }, {}});
+  add({"nlerp", {a, b, t}, {out("out_q", 4, Measure::unit_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(clause::NLERP_1_nlerp(quat(in[0]), quat(in[1]), in[2][0])); }, {}});
+  add({"blend_qlb", {influences("q", 4), influences("w", 1)}, {out("out_q", 4, Measure::unit_rotation)}, true,
+       [](const Values& in, std::size_t k) {
+         const auto qs = quats(in[0], k);
+         return one(clause::QLB_1_blend(std::span<const Quat>(qs), std::span<const Real>(in[1])));
+       }, {}});
+  add({"blend_log", {influences("q", 4), influences("w", 1)}, {out("out_q", 4, Measure::unit_rotation)}, true,
+       [](const Values& in, std::size_t k) {
+         const auto qs = quats(in[0], k);
+         return one(clause::LOGBLEND_1_blend(std::span<const Quat>(qs), std::span<const Real>(in[1])));
+       }, {}});
+  add({"dq_from_rotation_translation", {q, Array{"t", 3}}, {out("out_d", 8, Measure::rigid)}, false,
+       [](const Values& in, std::size_t) { return one(clause::DQ_1_from_rotation_translation(quat(in[0]), vec3(in[1]))); }, {}});
+  add({"dq_compose", {da, db}, {out("out_d", 8, Measure::rigid)}, false,
+       [](const Values& in, std::size_t) { return one(clause::DQ_2_compose(dq(in[0]), dq(in[1]))); }, {}});
+  add({"dq_apply_point", {d, Array{"p", 3}}, {out("out_p", 3, Measure::point)}, false,
+       [](const Values& in, std::size_t) { return one(clause::DQ_3_apply_point(dq(in[0]), vec3(in[1]))); },
+       [](const Values& in, std::size_t) { return rigid_scale(dq(in[0]), vec3(in[1])); }});
+  add({"dq_normalize", {d}, {out("out_d", 8, Measure::rigid)}, false,
+       [](const Values& in, std::size_t) { return one(clause::DQ_4_normalize(dq(in[0]))); }, {}});
+  add({"dq_sclerp", {da, db, t}, {out("out_d", 8, Measure::rigid)}, false,
+       [](const Values& in, std::size_t) { return one(clause::DQ_5_sclerp(dq(in[0]), dq(in[1]), in[2][0])); }, {}});
+  add({"dq_blend", {influences("d", 8), influences("w", 1)}, {out("out_d", 8, Measure::rigid)}, true,
+       [](const Values& in, std::size_t k) {
+         const auto ds = dqs(in[0], k);
+         return one(clause::DQ_6_dlb(std::span<const DQ>(ds), std::span<const Real>(in[1])));
+       }, {}});
+  add({"rotate_about_axis", {Array{"c", 3}, Array{"u", 3}, Array{"angle", 1}, Array{"p", 3}},
+       {out("out_p", 3, Measure::point)}, false,
+       [](const Values& in, std::size_t) {
+         return one(clause::AXIS_1_rotate_about_line(vec3(in[0]), vec3(in[1]), in[2][0], vec3(in[3])));
+       },
+       [](const Values& in, std::size_t) {
+         return std::max({Real(1), length_of(in[0], 0), length_of(in[3], 0)});
+       }});
+  auto skin_scale = [](const Values& in, std::size_t k) {
+    Real s = std::max(Real(1), length_of(in[3], 0));
+    for (std::size_t i = 0; i < k; ++i) s = std::max(s, length_of(in[1], i));
+    return s;
+  };
+  add({"skin_linear", {influences("q", 4), influences("t", 3), influences("w", 1), Array{"v", 3}},
+       {out("out_v", 3, Measure::point)}, true,
+       [](const Values& in, std::size_t k) {
+         const auto qs = quats(in[0], k);
+         const auto ts = vec3s(in[1], k);
+         return one(clause::SKIN_1_linear_blend(std::span<const Quat>(qs), std::span<const V3>(ts),
+                                                std::span<const Real>(in[2]), vec3(in[3])));
+       },
+       skin_scale});
+  add({"skin_dual_quaternion", {influences("q", 4), influences("t", 3), influences("w", 1), Array{"v", 3}},
+       {out("out_v", 3, Measure::point)}, true,
+       [](const Values& in, std::size_t k) {
+         const auto qs = quats(in[0], k);
+         const auto ts = vec3s(in[1], k);
+         return one(clause::SKIN_2_dual_quaternion(std::span<const Quat>(qs), std::span<const V3>(ts),
+                                                   std::span<const Real>(in[2]), vec3(in[3])));
+       },
+       skin_scale});
+  return ops;
+}
+
+// ---- calling a table --------------------------------------------------------------------
+
+template <class S>
+const S* cin(const std::vector<const void*>& in, std::size_t i) { return static_cast<const S*>(in.at(i)); }
+template <class S>
+S* cout(const std::vector<void*>& out, std::size_t i) { return static_cast<S*>(out.at(i)); }
+
+template <class S, class Ops>
+int call_ops(const Ops& o, const std::string& op, std::size_t n, std::size_t k, const std::vector<const void*>& in,
+             const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
+  auto I = [&](std::size_t i) { return cin<S>(in, i); };
+  auto O = [&](std::size_t i) { return cout<S>(out, i); };
+#define RC_CALL(slot, ...)                  \
+  if (op == #slot) {                        \
+    if (o.slot == nullptr) return -1;       \
+    return probe_only ? 0 : o.slot(__VA_ARGS__); \
+  }
+  RC_CALL(normalize, n, I(0), O(0), st)
+  RC_CALL(compose, n, I(0), I(1), O(0), st)
+  RC_CALL(inverse, n, I(0), O(0), st)
+  RC_CALL(apply_vector, n, I(0), I(1), O(0), st)
+  RC_CALL(apply_bivector, n, I(0), I(1), O(0), st)
+  RC_CALL(apply_trivector, n, I(0), I(1), O(0), st)
+  RC_CALL(to_matrix, n, I(0), O(0), st)
+  RC_CALL(from_matrix, n, I(0), O(0), st)
+  RC_CALL(to_axis_angle, n, I(0), O(0), O(1), st)
+  RC_CALL(from_axis_angle, n, I(0), I(1), O(0), st)
+  RC_CALL(log, n, I(0), O(0), st)
+  RC_CALL(exp, n, I(0), O(0), st)
+  RC_CALL(slerp, n, I(0), I(1), I(2), O(0), st)
+  RC_CALL(nlerp, n, I(0), I(1), I(2), O(0), st)
+  RC_CALL(blend_qlb, n, k, I(0), I(1), O(0), st)
+  RC_CALL(blend_log, n, k, I(0), I(1), O(0), st)
+  RC_CALL(dq_from_rotation_translation, n, I(0), I(1), O(0), st)
+  RC_CALL(dq_compose, n, I(0), I(1), O(0), st)
+  RC_CALL(dq_apply_point, n, I(0), I(1), O(0), st)
+  RC_CALL(dq_normalize, n, I(0), O(0), st)
+  RC_CALL(dq_sclerp, n, I(0), I(1), I(2), O(0), st)
+  RC_CALL(dq_blend, n, k, I(0), I(1), O(0), st)
+  RC_CALL(rotate_about_axis, n, I(0), I(1), I(2), I(3), O(0), st)
+  RC_CALL(skin_linear, n, k, I(0), I(1), I(2), I(3), O(0), st)
+  RC_CALL(skin_dual_quaternion, n, k, I(0), I(1), I(2), I(3), O(0), st)
+#undef RC_CALL
+  return -1;
+}
+
+}  // namespace
+
+const std::vector<AbiOp>& abi_ops() {
+  static const std::vector<AbiOp> ops = build();
+  return ops;
+}
+
+const AbiOp* find_abi_op(const std::string& name) {
+  for (const AbiOp& op : abi_ops())
+    if (op.name == name) return &op;
+  return nullptr;
+}
+
+int call(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
+         const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status) {
+  if (table.scalar == RC_SCALAR_FLOAT32 && table.f32) return call_ops<float>(*table.f32, op, n, k, in, out, status, false);
+  if (table.scalar == RC_SCALAR_FLOAT64 && table.f64) return call_ops<double>(*table.f64, op, n, k, in, out, status, false);
+  return -1;
+}
+
+bool supports(const rc_impl& table, const std::string& op) {
+  // Only the slot is inspected: probing must not run code of the implementation.
+  const AbiOp* desc = find_abi_op(op);
+  if (desc == nullptr) return false;
+  const std::vector<const void*> in(desc->inputs.size(), nullptr);
+  const std::vector<void*> out(desc->outputs.size(), nullptr);
+  if (table.scalar == RC_SCALAR_FLOAT32 && table.f32) return call_ops<float>(*table.f32, op, 0, 0, in, out, nullptr, true) == 0;
+  if (table.scalar == RC_SCALAR_FLOAT64 && table.f64) return call_ops<double>(*table.f64, op, 0, 0, in, out, nullptr, true) == 0;
+  return false;
+}
+
+}  // namespace rotorcert::engine

@@ -1,0 +1,619 @@
+#include <rotorcert/engine/cases.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+
+#include <rotorcert/reference/rigid_ops.hpp>
+#include <rotorcert/reference/rotation_ops.hpp>
+
+#include "../selfcheck/ops.hpp"
+
+namespace rotorcert::engine {
+namespace {
+
+using Quat = ref::Quaternion<Real>;
+using V3 = ref::Vec3<Real>;
+
+// Which ABI ops judge which clause. Edge clauses apply to every op whose inputs they concern.
+const std::map<std::string, std::vector<std::string>>& clause_ops() {
+  static const std::vector<std::string> quaternion_ops = {
+      "normalize", "compose", "inverse", "apply_vector", "apply_bivector", "apply_trivector", "to_matrix",
+      "to_axis_angle", "log", "slerp", "nlerp", "blend_qlb", "blend_log"};
+  static const std::vector<std::string> rigid_ops = {"dq_from_rotation_translation", "dq_compose", "dq_apply_point",
+                                                    "dq_normalize", "dq_sclerp", "dq_blend"};
+  static const std::vector<std::string> weighted_ops = {"blend_qlb", "blend_log", "dq_blend", "skin_linear",
+                                                        "skin_dual_quaternion"};
+  auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  static const std::map<std::string, std::vector<std::string>> table = {
+      {"QUAT-2", {"apply_vector"}},
+      {"NORM-1", {"normalize"}},
+      {"COMPOSE-1", {"compose"}},
+      {"INV-1", {"inverse"}},
+      {"APPLY-1", {"apply_vector"}},
+      {"APPLY-2", {"apply_bivector"}},
+      {"APPLY-3", {"apply_trivector"}},
+      {"MAT-1", {"to_matrix"}},
+      {"MAT-2", {"from_matrix"}},
+      {"MAT-3", {"from_matrix"}},
+      {"AXANG-1", {"to_axis_angle"}},
+      {"AXANG-2", {"from_axis_angle"}},
+      {"LOG-1", {"log"}},
+      {"LOG-2", {"log"}},
+      {"EXP-1", {"exp"}},
+      {"EXP-2", {"log", "exp"}},  // a round trip through both, see checks_for_clause_impl
+      {"SLERP-1", {"slerp"}},
+      {"SLERP-2", {"slerp"}},
+      {"SLERP-3", {"slerp"}},
+      {"SLERP-4", {"slerp"}},
+      {"SLERP-5", {"slerp"}},
+      {"NLERP-1", {"nlerp"}},
+      {"QLB-1", {"blend_qlb"}},
+      {"LOGBLEND-1", {"blend_log"}},
+      {"DQ-1", {"dq_from_rotation_translation"}},
+      {"DQ-2", {"dq_compose"}},
+      {"DQ-3", {"dq_apply_point"}},
+      {"DQ-4", {"dq_normalize"}},
+      {"DQ-5", {"dq_sclerp"}},
+      {"DQ-6", {"dq_blend"}},
+      {"AXIS-1", {"rotate_about_axis"}},
+      {"SKIN-1", {"skin_linear"}},
+      {"SKIN-2", {"skin_dual_quaternion"}},
+      {"SKIN-3", {"skin_linear", "skin_dual_quaternion"}},
+      {"EDGE-1", {"normalize", "compose", "inverse", "apply_vector", "to_matrix", "from_matrix", "log", "exp", "slerp",
+                  "nlerp", "blend_qlb", "blend_log", "dq_compose", "dq_normalize", "dq_sclerp", "dq_blend"}},
+      {"EDGE-2", {"compose", "to_axis_angle", "log", "exp", "slerp", "nlerp", "blend_qlb", "blend_log", "dq_sclerp"}},
+      {"EDGE-3", {"slerp", "nlerp", "blend_qlb", "dq_sclerp", "dq_blend"}},
+      {"EDGE-4", {"compose", "inverse", "apply_vector", "to_matrix", "slerp", "nlerp", "blend_qlb", "dq_apply_point"}},
+      {"EDGE-5", join(quaternion_ops, {"dq_apply_point", "dq_normalize", "dq_sclerp", "dq_blend"})},
+      {"EDGE-6", join(quaternion_ops, rigid_ops)},
+      {"EDGE-7", join(join(quaternion_ops, rigid_ops), {"from_matrix", "from_axis_angle", "exp", "rotate_about_axis",
+                                                        "skin_linear", "skin_dual_quaternion"})},
+      {"EDGE-8", {"normalize", "apply_vector", "to_matrix", "slerp", "nlerp", "log"}},
+      {"EDGE-9", weighted_ops},
+  };
+  return table;
+}
+
+/// Deterministic generator for one (seed, clause, op): the same triple gives the same cases.
+class Gen {
+ public:
+  Gen(std::uint64_t seed, const std::string& clause, const std::string& op, ref::Format format) : format_(format) {
+    std::uint64_t h = 1469598103934665603ull ^ seed;  // FNV-1a over clause and op
+    for (char c : clause + "/" + op) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    rng_.seed(h);
+  }
+
+  ref::Format format() const { return format_; }
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  double normal() { return std::normal_distribution<double>(0.0, 1.0)(rng_); }
+  Real round(const Real& x) const { return round_to(format_, x); }
+
+  /// Uniform on S^3 (normalised Gaussian), normalised exactly, then rounded to the format.
+  Quat unit_quaternion() {
+    const Quat q{Real(normal()), Real(normal()), Real(normal()), Real(normal())};
+    return rounded(ref::normalized(q));
+  }
+  /// A unit vector, exact, not rounded.
+  V3 direction() {
+    V3 v{Real(normal()), Real(normal()), Real(normal())};
+    const Real n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return {v[0] / n, v[1] / n, v[2] / n};
+  }
+  /// A vector of length 10^U(lo, hi), rounded.
+  V3 vector(double lo_exp10, double hi_exp10) {
+    const V3 d = direction();
+    const Real len = pow(Real(10), Real(uniform(lo_exp10, hi_exp10)));
+    return {round(d[0] * len), round(d[1] * len), round(d[2] * len)};
+  }
+  /// Exact rotation by angle about a unit axis (not rounded).
+  static Quat rotation(const Real& angle, const V3& axis) {
+    const Real h = angle / Real(2);
+    return {cos(h), sin(h) * axis[0], sin(h) * axis[1], sin(h) * axis[2]};
+  }
+  /// b = a * (rotation by `angle` about a random axis), rounded.
+  Quat near(const Quat& a, const Real& angle) { return rounded(a * rotation(angle, direction())); }
+  Quat rounded(const Quat& q) const { return {round(q.w), round(q.x), round(q.y), round(q.z)}; }
+  /// A unit dual quaternion of a random rotation and a translation of length up to 10^hi.
+  ref::DualQuaternion<Real> rigid(double hi_exp10) {
+    const Quat q = ref::normalized(Quat{Real(normal()), Real(normal()), Real(normal()), Real(normal())});
+    const V3 d = direction();
+    const Real len = pow(Real(10), Real(uniform(-1, hi_exp10)));
+    const auto r = ref::clause::DQ_1_from_rotation_translation(q, V3{d[0] * len, d[1] * len, d[2] * len});
+    return {rounded(r.value.real), rounded(r.value.dual)};
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  ref::Format format_;
+};
+
+std::vector<Real> flat(const Quat& q) { return {q.x, q.y, q.z, q.w}; }
+std::vector<Real> flat(const V3& v) { return {v[0], v[1], v[2]}; }
+std::vector<Real> flat(const ref::DualQuaternion<Real>& d) {
+  return {d.real.x, d.real.y, d.real.z, d.real.w, d.dual.x, d.dual.y, d.dual.z, d.dual.w};
+}
+void append(std::vector<Real>& a, const std::vector<Real>& b) { a.insert(a.end(), b.begin(), b.end()); }
+
+/// Positive weights, rounded, the first one positive (it is the pivot).
+std::vector<Real> weights(Gen& g, std::size_t k) {
+  std::vector<Real> w;
+  for (std::size_t i = 0; i < k; ++i) w.push_back(g.round(Real(g.uniform(i == 0 ? 0.05 : 0.0, 1.0))));
+  return w;
+}
+
+/// One ordinary random input for `op` (influence count k for n-way ops).
+Case random_case(Gen& g, const std::string& op, std::size_t k = 0) {
+  Case c;
+  c.label = "random";
+  auto q = [&] { return flat(g.unit_quaternion()); };
+  auto t01 = [&] { return std::vector<Real>{g.round(Real(g.uniform(0, 1)))}; };
+  if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log") {
+    c.inputs = {q()};
+  } else if (op == "compose") {
+    c.inputs = {q(), q()};
+  } else if (op == "apply_vector" || op == "apply_bivector") {
+    c.inputs = {q(), flat(g.vector(-3, 3))};
+  } else if (op == "apply_trivector") {
+    c.inputs = {q(), {g.round(Real(g.uniform(-10, 10)))}};
+  } else if (op == "from_matrix") {
+    const Quat u = ref::normalized(Quat{Real(g.normal()), Real(g.normal()), Real(g.normal()), Real(g.normal())});
+    const auto m = ref::clause::MAT_1_to_matrix(u).value;
+    std::vector<Real> mm;
+    for (const Real& x : m) mm.push_back(g.round(x));
+    c.inputs = {mm};
+  } else if (op == "from_axis_angle") {
+    c.inputs = {{g.round(Real(g.uniform(-7, 7)))}, flat(g.vector(-1, 1))};
+  } else if (op == "exp") {
+    const V3 d = g.direction();
+    const Real len(g.uniform(0, 3));
+    c.inputs = {{g.round(d[0] * len), g.round(d[1] * len), g.round(d[2] * len)}};
+  } else if (op == "slerp" || op == "nlerp") {
+    c.inputs = {q(), q(), t01()};
+  } else if (op == "blend_qlb" || op == "blend_log") {
+    c.k = k ? k : std::size_t(g.integer(1, 5));
+    std::vector<Real> qs;
+    for (std::size_t i = 0; i < c.k; ++i) append(qs, q());
+    c.inputs = {qs, weights(g, c.k)};
+  } else if (op == "dq_from_rotation_translation") {
+    c.inputs = {q(), flat(g.vector(-1, 3))};
+  } else if (op == "dq_compose") {
+    c.inputs = {flat(g.rigid(3)), flat(g.rigid(3))};
+  } else if (op == "dq_apply_point") {
+    c.inputs = {flat(g.rigid(3)), flat(g.vector(-1, 3))};
+  } else if (op == "dq_normalize") {
+    // Non-unit and with a dual part not orthogonal to the real part: what DQ-4 must repair.
+    auto d = g.rigid(2);
+    const Real s(std::ldexp(1.0, g.integer(-3, 3)));
+    std::vector<Real> v = flat(d);
+    for (int i = 0; i < 8; ++i) v[i] = g.round(v[i] * s);
+    for (int i = 4; i < 8; ++i) v[i] = g.round(v[i] + v[i - 4] * Real(g.uniform(-0.5, 0.5)));
+    c.inputs = {v};
+  } else if (op == "dq_sclerp") {
+    c.inputs = {flat(g.rigid(2)), flat(g.rigid(2)), t01()};
+  } else if (op == "dq_blend") {
+    c.k = k ? k : std::size_t(g.integer(1, 4));
+    std::vector<Real> ds;
+    for (std::size_t i = 0; i < c.k; ++i) append(ds, flat(g.rigid(2)));
+    c.inputs = {ds, weights(g, c.k)};
+  } else if (op == "rotate_about_axis") {
+    c.inputs = {flat(g.vector(-1, 1)), flat(g.vector(-1, 1)), {g.round(Real(g.uniform(-7, 7)))}, flat(g.vector(-1, 2))};
+  } else if (op == "skin_linear" || op == "skin_dual_quaternion") {
+    c.k = k ? k : std::size_t(g.integer(1, 4));
+    std::vector<Real> qs, ts;
+    for (std::size_t i = 0; i < c.k; ++i) {
+      append(qs, q());
+      append(ts, flat(g.vector(-1, 1)));
+    }
+    c.inputs = {qs, ts, weights(g, c.k), flat(g.vector(-1, 1))};
+  }
+  return c;
+}
+
+/// Indices of the input arrays of `op` that hold quaternions (stride 4) or dual quaternions (8).
+std::vector<std::size_t> arrays_with_stride(const std::string& op, int stride) {
+  std::vector<std::size_t> r;
+  const AbiOp* d = find_abi_op(op);
+  for (std::size_t i = 0; d && i < d->inputs.size(); ++i)
+    if (d->inputs[i].stride == stride) r.push_back(i);
+  return r;
+}
+
+Case labelled(Case c, std::string label) {
+  c.label = std::move(label);
+  return c;
+}
+
+/// Replaces every quaternion of every quaternion array by q, every dual quaternion by d.
+Case with_all(Case c, const std::string& op, const std::vector<Real>& q, const std::vector<Real>& d) {
+  for (std::size_t i : arrays_with_stride(op, 4))
+    for (std::size_t j = 0; j < c.inputs[i].size(); j += 4) std::copy(q.begin(), q.end(), c.inputs[i].begin() + j);
+  for (std::size_t i : arrays_with_stride(op, 8))
+    for (std::size_t j = 0; j < c.inputs[i].size(); j += 8) std::copy(d.begin(), d.end(), c.inputs[i].begin() + j);
+  return c;
+}
+
+void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, const std::string& op, int n) {
+  const bool f32 = g.format() == ref::Format::binary32;
+  auto repeat = [&](auto make) {
+    for (int i = 0; i < n; ++i) cases.push_back(make(i));
+  };
+  auto random = [&](std::size_t k = 0) { return random_case(g, op, k); };
+  const Real pi = ref::ScalarTraits<Real>::pi();
+
+  if (clause == "NORM-1") {
+    repeat([&](int) {
+      Case c = random();
+      const Real s(std::ldexp(g.uniform(0.5, 1.0), g.integer(-8, 8)));
+      for (Real& x : c.inputs[0]) x = g.round(x * s);
+      return labelled(c, "non-unit scale 2^-8..2^8");
+    });
+  } else if (clause == "MAT-2") {
+    repeat([&](int) { return random(); });
+    // Half turns (w = 0) and near half turns: the branch where naive trace-based extraction fails.
+    repeat([&](int) {
+      const Quat u = Gen::rotation(pi - Real(g.uniform(0, 1e-3)), g.direction());
+      const auto m = ref::clause::MAT_1_to_matrix(u).value;
+      Case c;
+      c.inputs = {{}};
+      for (const Real& x : m) c.inputs[0].push_back(g.round(x));
+      c.label = "near half turn";
+      return c;
+    });
+  } else if (clause == "MAT-3") {
+    repeat([&](int i) {
+      Case c = random();
+      if (i % 4 == 3) {  // a reflection: det < 0 is outside the domain
+        for (int r = 0; r < 3; ++r) c.inputs[0][r] = -c.inputs[0][r];
+        return labelled(c, "reflection (det < 0)");
+      }
+      const double size = std::pow(10.0, g.uniform(-6, -2));
+      for (Real& x : c.inputs[0]) x = g.round(x + Real(g.uniform(-size, size)));
+      return labelled(c, "perturbed rotation");
+    });
+  } else if (clause == "AXANG-1") {
+    repeat([&](int) { return random(); });
+    // Angles above 2 pi - 1 (w < -cos(1/2)): where GLM 0.9.9.8's angle() returns the wrong branch.
+    repeat([&](int) {
+      Case c;
+      c.inputs = {flat(g.rounded(Gen::rotation(Real(g.uniform(2 * M_PI - 1, 2 * M_PI)), g.direction())))};
+      c.label = "angle in (2pi - 1, 2pi)";
+      return c;
+    });
+  } else if (clause == "LOG-2") {
+    for (double s : {1.0, 0.5, 3.0})
+      cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion"});
+    cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components"});
+  } else if (clause == "SLERP-2") {
+    repeat([&](int) { return random(); });
+  } else if (clause == "SLERP-3") {
+    repeat([&](int i) {
+      Case c = random();
+      c.inputs[2] = {Real(i % 2)};
+      return labelled(c, i % 2 ? "t = 1" : "t = 0");
+    });
+  } else if (clause == "SLERP-4") {
+    repeat([&](int i) {
+      Case c = random();
+      c.inputs[2] = {g.round(Real(i % 2 ? g.uniform(1, 2) : g.uniform(-1, 0)))};
+      return labelled(c, "t outside [0, 1]");
+    });
+  } else if (clause == "SLERP-5") {
+    for (int p = 0; p < std::max(1, n / 9); ++p) {
+      Case base = random();
+      for (int j = 0; j <= 8; ++j) {
+        Case c = base;
+        c.inputs[2] = {Real(j) / Real(8)};
+        cases.push_back(labelled(c, "t = j/8 on one pair"));
+      }
+    }
+  } else if (clause == "SKIN-3") {
+    repeat([&](int i) {
+      if (i % 2 == 0) return labelled(random(1), "single influence");
+      Case c = random(3);
+      // Copy influence 0 (rotation and translation) over the others.
+      for (std::size_t a : {std::size_t(0), std::size_t(1)}) {
+        const std::size_t stride = c.inputs[a].size() / c.k;
+        for (std::size_t j = 1; j < c.k; ++j)
+          for (std::size_t s = 0; s < stride; ++s) c.inputs[a][j * stride + s] = c.inputs[a][s];
+      }
+      return labelled(c, "equal influences");
+    });
+  } else if (clause == "EDGE-1") {
+    const std::vector<Real> id = {Real(0), Real(0), Real(0), Real(1)};
+    const std::vector<Real> did = {Real(0), Real(0), Real(0), Real(1), Real(0), Real(0), Real(0), Real(0)};
+    Case c = with_all(random(2), op, id, did);
+    if (op == "exp") c.inputs[0] = {Real(0), Real(0), Real(0)};
+    if (op == "from_matrix") c.inputs[0] = {Real(1), Real(0), Real(0), Real(0), Real(1), Real(0), Real(0), Real(0), Real(1)};
+    if (op == "apply_vector") c.inputs[1] = flat(g.vector(-1, 1));
+    cases.push_back(labelled(c, "identity"));
+  } else if (clause == "EDGE-2") {
+    repeat([&](int) {
+      Case c = random(2);
+      const Real angle = pow(Real(10), Real(g.uniform(-9, -3)));
+      const Quat a = g.unit_quaternion();
+      if (op == "log" || op == "to_axis_angle") {
+        c.inputs[0] = flat(g.rounded(Gen::rotation(angle, g.direction())));
+      } else if (op == "exp") {
+        const V3 d = g.direction();
+        c.inputs[0] = {g.round(d[0] * angle / 2), g.round(d[1] * angle / 2), g.round(d[2] * angle / 2)};
+      } else if (op == "compose") {
+        c.inputs[0] = flat(g.rounded(Gen::rotation(angle, g.direction())));
+        c.inputs[1] = flat(g.rounded(Gen::rotation(angle, g.direction())));
+      } else if (op == "blend_qlb" || op == "blend_log") {
+        for (std::size_t j = 0; j < c.k; ++j) {
+          const auto b = flat(g.near(a, angle));
+          std::copy(b.begin(), b.end(), c.inputs[0].begin() + j * 4);
+        }
+      } else if (op == "dq_sclerp") {
+        const auto d = g.rigid(1);
+        c.inputs[0] = flat(d);
+        auto e = d;
+        e.real = g.near(d.real, angle);
+        c.inputs[1] = flat(e);  // a dual part that no longer matches exactly: still a valid rigid motion
+        c.inputs[1] = flat(ref::clause::DQ_4_normalize(e).value);
+        for (Real& x : c.inputs[1]) x = g.round(x);
+      } else {  // slerp, nlerp
+        c.inputs[0] = flat(a);
+        c.inputs[1] = flat(g.near(a, angle));
+      }
+      return labelled(c, "angle 1e-9 .. 1e-3");
+    });
+  } else if (clause == "EDGE-3") {
+    repeat([&](int i) {
+      Case c = random(2);
+      const Quat a = g.unit_quaternion();
+      // (x, y, z, w) and (-y, x, -w, z) have a dot product of exactly 0 in any arithmetic: the
+      // products pair up and cancel. A half turn between them: the tie of the hemisphere rule.
+      Quat b{a.z, -a.y, a.x, -a.w};
+      if (i % 3 == 2) b = -a;  // exact antipode: flips, constant interpolation
+      if (op == "blend_qlb" || op == "dq_blend") {
+        if (op == "blend_qlb") {
+          const auto fa = flat(a), fb = flat(b);
+          std::copy(fa.begin(), fa.end(), c.inputs[0].begin());
+          std::copy(fb.begin(), fb.end(), c.inputs[0].begin() + 4);
+        } else {
+          auto d0 = g.rigid(1), d1 = g.rigid(1);
+          d0.real = a;
+          d1.real = b;
+          d0 = ref::clause::DQ_4_normalize(d0).value;
+          d1 = ref::clause::DQ_4_normalize(d1).value;
+          const auto f0 = flat(d0), f1 = flat(d1);
+          std::vector<Real> ds(f0);
+          append(ds, f1);
+          for (Real& x : ds) x = g.round(x);
+          c.inputs[0] = ds;
+        }
+      } else if (op == "dq_sclerp") {
+        auto d0 = g.rigid(1), d1 = g.rigid(1);
+        d0.real = a;
+        d1.real = b;
+        c.inputs[0] = flat(g.rounded(ref::clause::DQ_4_normalize(d0).value.real));
+        c.inputs[0] = flat(ref::clause::DQ_4_normalize(d0).value);
+        c.inputs[1] = flat(ref::clause::DQ_4_normalize(d1).value);
+        for (auto* v : {&c.inputs[0], &c.inputs[1]})
+          for (Real& x : *v) x = g.round(x);
+      } else {
+        c.inputs[0] = flat(a);
+        c.inputs[1] = flat(b);
+      }
+      return labelled(c, i % 3 == 2 ? "exact antipode" : "dot exactly 0");
+    });
+  } else if (clause == "EDGE-4") {
+    repeat([&](int) {
+      Case c = random(2);
+      for (std::size_t i : arrays_with_stride(op, 4))
+        for (Real& x : c.inputs[i]) x = -x;
+      for (std::size_t i : arrays_with_stride(op, 8))
+        for (Real& x : c.inputs[i]) x = -x;
+      return labelled(c, "negated quaternions");
+    });
+  } else if (clause == "EDGE-5") {
+    const int extreme = f32 ? 100 : 900;  // |q|^2 overflows / underflows the format
+    repeat([&](int i) {
+      Case c = random(2);
+      // COMPOSE-1 is defined on the unnormalised inputs (an EDGE-5 exception): its exact product
+      // must stay representable, so each factor gets half the extreme exponent.
+      const int far = op == "compose" ? extreme / 2 : extreme;
+      const int e = (i % 3 == 0) ? g.integer(-10, 10) : (i % 3 == 1 ? far : -far);
+      const Real s(std::ldexp(g.uniform(1.0, 2.0), e));
+      for (std::size_t a : arrays_with_stride(op, 4))
+        for (Real& x : c.inputs[a]) x = g.round(x * s);
+      for (std::size_t a : arrays_with_stride(op, 8))
+        for (Real& x : c.inputs[a]) x = g.round(x * s);
+      return labelled(c, "non-unit scale 2^" + std::to_string(e));
+    });
+  } else if (clause == "EDGE-6") {
+    for (std::size_t a : arrays_with_stride(op, 4)) {
+      Case c = random(2);
+      std::fill(c.inputs[a].begin(), c.inputs[a].begin() + 4, Real(0));
+      cases.push_back(labelled(c, "zero quaternion in " + find_abi_op(op)->inputs[a].name));
+      Case m = random(2);
+      for (int j = 0; j < 4; ++j) m.inputs[a][j] = Real(j % 2 ? -0.0 : 0.0);
+      cases.push_back(labelled(m, "quaternion of +-0 in " + find_abi_op(op)->inputs[a].name));
+    }
+    for (std::size_t a : arrays_with_stride(op, 8)) {
+      Case c = random(2);
+      std::fill(c.inputs[a].begin(), c.inputs[a].begin() + 4, Real(0));
+      cases.push_back(labelled(c, "zero real part in " + find_abi_op(op)->inputs[a].name));
+    }
+  } else if (clause == "EDGE-7") {
+    const AbiOp* d = find_abi_op(op);
+    const Real specials[3] = {ref::ScalarTraits<Real>::nan(), Real("inf"), -Real("inf")};
+    for (std::size_t a = 0; a < d->inputs.size(); ++a)
+      for (int s = 0; s < 3; ++s) {
+        Case c = random(2);
+        const std::size_t at = std::size_t(g.integer(0, int(c.inputs[a].size()) - 1));
+        c.inputs[a][at] = specials[s];
+        cases.push_back(labelled(c, std::string(s == 0 ? "NaN" : s == 1 ? "+Inf" : "-Inf") + " in " + d->inputs[a].name));
+      }
+  } else if (clause == "EDGE-8") {
+    repeat([&](int i) {
+      Case c = random();
+      // Components that are subnormal in the format (and -0): a naive |q|^2 underflows to 0.
+      const int lowest = f32 ? -149 : -1074;
+      for (std::size_t a : arrays_with_stride(op, 4))
+        for (std::size_t j = 0; j < c.inputs[a].size(); ++j) {
+          const int m = g.integer(0, 7);
+          c.inputs[a][j] = (j + i) % 4 == 0 ? Real(-0.0) : Real(std::ldexp(double(m + 1), lowest + g.integer(0, 10)));
+        }
+      return labelled(c, "subnormal and -0 components");
+    });
+  } else if (clause == "EDGE-9") {
+    const AbiOp* d = find_abi_op(op);
+    std::size_t w = 0;
+    for (std::size_t a = 0; a < d->inputs.size(); ++a)
+      if (d->inputs[a].name == "w") w = a;
+    const char* labels[] = {"negative weight", "NaN weight", "+Inf weight", "all weights zero"};
+    for (int kind = 0; kind < 4; ++kind) {
+      Case c = random(3);
+      if (kind == 0) c.inputs[w][1] = Real(-0.25);
+      if (kind == 1) c.inputs[w][2] = ref::ScalarTraits<Real>::nan();
+      if (kind == 2) c.inputs[w][0] = Real("inf");
+      if (kind == 3) std::fill(c.inputs[w].begin(), c.inputs[w].end(), Real(0));
+      cases.push_back(labelled(c, labels[kind]));
+    }
+    Case empty = random(1);
+    empty.k = 0;
+    for (const Array& arr : d->inputs)
+      if (arr.per_influence) empty.inputs[&arr - d->inputs.data()].clear();
+    cases.push_back(labelled(empty, "no influences (k = 0)"));
+  } else {
+    // The operation's own clause: ordinary random inputs, obtuse pairs included by construction.
+    repeat([&](int) { return random(); });
+  }
+}
+
+/// Example op (spec/examples.json) -> ABI op, for the examples that an implementation can run.
+const std::map<std::string, std::string>& example_ops() {
+  static const std::map<std::string, std::string> m = {
+      {"normalize", "normalize"}, {"compose", "compose"}, {"inverse", "inverse"},
+      {"apply_vector", "apply_vector"}, {"apply_bivector", "apply_bivector"}, {"apply_trivector", "apply_trivector"},
+      {"to_matrix", "to_matrix"}, {"from_matrix", "from_matrix"}, {"to_axis_angle", "to_axis_angle"},
+      {"from_axis_angle", "from_axis_angle"}, {"log", "log"}, {"exp", "exp"}, {"slerp", "slerp"},
+      {"rotor_interp", "slerp"}, {"nlerp", "nlerp"}, {"qlb", "blend_qlb"}, {"log_blend", "blend_log"},
+      {"dq_from_rt", "dq_from_rotation_translation"}, {"dq_compose", "dq_compose"},
+      {"dq_apply_point", "dq_apply_point"}, {"dq_normalize", "dq_normalize"}, {"dq_sclerp", "dq_sclerp"},
+      {"dq_dlb", "dq_blend"}, {"axis_rotation", "rotate_about_axis"}, {"lbs_vertex", "skin_linear"},
+      {"dqs_vertex", "skin_dual_quaternion"}};
+  return m;
+}
+
+/// The inputs of a worked example in ABI layout, rounded to the format.
+Case example_case(const spec::Spec& spec, const spec::Example& ex, const std::string& op, ref::Format format) {
+  const conformance::Inputs in(ex.in, ex.json_path + "/in", &spec);
+  Case c;
+  c.label = "example " + ex.id;
+  auto q = [](const Quat& x) { return flat(x); };
+  auto qs = [&](const std::string& key) {
+    std::vector<Real> r;
+    for (const Quat& x : in.quats(key)) append(r, flat(x));
+    return r;
+  };
+  auto vs = [&](const std::string& key) {
+    std::vector<Real> r;
+    for (const V3& x : in.vec3s(key)) append(r, flat(x));
+    return r;
+  };
+  auto s = [&](const std::string& key) { return std::vector<Real>{in.scalar(key)}; };
+  if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log") c.inputs = {q(in.quat("q"))};
+  else if (op == "compose") c.inputs = {q(in.quat("a")), q(in.quat("b"))};
+  else if (op == "apply_vector") c.inputs = {q(in.quat("q")), flat(in.vec3("v"))};
+  else if (op == "apply_bivector") c.inputs = {q(in.quat("q")), flat(in.vec3("b"))};
+  else if (op == "apply_trivector") c.inputs = {q(in.quat("q")), s("s")};
+  else if (op == "from_matrix") { const auto m = in.mat3("m"); c.inputs = {{m.begin(), m.end()}}; }
+  else if (op == "from_axis_angle") c.inputs = {s("theta"), flat(in.vec3("axis"))};
+  else if (op == "exp") c.inputs = {flat(in.vec3("v"))};
+  else if (op == "slerp" || op == "nlerp") c.inputs = {q(in.quat("a")), q(in.quat("b")), s("t")};
+  else if (op == "blend_qlb" || op == "blend_log") { c.inputs = {qs("qs"), in.scalars("ws")}; c.k = c.inputs[1].size(); }
+  else if (op == "dq_from_rotation_translation") c.inputs = {q(in.quat("q")), flat(in.vec3("t"))};
+  else if (op == "dq_compose") c.inputs = {flat(in.dq("a")), flat(in.dq("b"))};
+  else if (op == "dq_apply_point") c.inputs = {flat(in.dq("d")), flat(in.vec3("p"))};
+  else if (op == "dq_normalize") c.inputs = {flat(in.dq("d"))};
+  else if (op == "dq_sclerp") c.inputs = {flat(in.dq("a")), flat(in.dq("b")), s("t")};
+  else if (op == "dq_blend") {
+    std::vector<Real> ds;
+    for (const auto& d : in.dqs("ds")) append(ds, flat(d));
+    c.inputs = {ds, in.scalars("ws")};
+    c.k = c.inputs[1].size();
+  } else if (op == "rotate_about_axis") c.inputs = {flat(in.vec3("c")), flat(in.vec3("u")), s("theta"), flat(in.vec3("p"))};
+  else if (op == "skin_linear" || op == "skin_dual_quaternion") {
+    c.inputs = {qs("qs"), vs("ts"), in.scalars("ws"), flat(in.vec3("v"))};
+    c.k = c.inputs[2].size();
+  }
+  for (auto& arr : c.inputs)
+    for (Real& x : arr) x = round_to(format, x);
+  return c;
+}
+
+/// The operation clause an ABI op belongs to (the first clause judged by that op alone).
+std::string main_clause_of(const std::string& op) {
+  for (const auto& [clause, ops] : clause_ops())
+    if (clause.rfind("EDGE-", 0) != 0 && clause != "SKIN-3" && ops.size() == 1 && ops[0] == op) return clause;
+  return {};
+}
+
+}  // namespace
+
+Real round_to(ref::Format format, const Real& x) {
+  if (format == ref::Format::binary32) return Real(mpfr_get_flt(x.mpfr_srcptr(), MPFR_RNDN));
+  return Real(mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN));
+}
+
+std::vector<std::string> ops_for_clause(const std::string& clause) {
+  const auto& t = clause_ops();
+  const auto it = t.find(clause);
+  return it == t.end() ? std::vector<std::string>{} : it->second;
+}
+
+std::vector<Check> checks_for_clause_impl(const spec::Spec& spec, const std::string& clause, ref::Format format,
+                                          const CaseOptions& options, const std::vector<std::string>& supported_ops) {
+  std::vector<Check> checks;
+  const spec::Clause* cl = spec.find_clause(clause);
+  if (cl == nullptr) return checks;
+  for (const std::string& op : supported_ops) {
+    Check check;
+    check.op = op;
+    if (clause == "EXP-2") {
+      // exp(log q) = q through the implementation: one check, on log's inputs, needing both ops.
+      const auto has = [&](const char* name) {
+        return std::find(supported_ops.begin(), supported_ops.end(), name) != supported_ops.end();
+      };
+      if (op != "log" || !has("exp")) continue;
+      check.log_exp_round_trip = true;
+      Gen g(options.seed, clause, op, format);
+      for (int i = 0; i < options.cases_per_family; ++i) check.cases.push_back(random_case(g, "log"));
+      checks.push_back(check);
+      continue;
+    }
+    Gen g(options.seed, clause, op, format);
+    if (options.worked_examples) {
+      for (const spec::Example& ex : spec.examples) {
+        if (ex.clause != clause) continue;
+        const auto it = example_ops().find(ex.op);
+        if (it == example_ops().end() || it->second != op) continue;
+        check.cases.push_back(example_case(spec, ex, op, format));
+      }
+    }
+    add_families(check.cases, g, clause, op, options.cases_per_family);
+    if (clause.rfind("EDGE-", 0) == 0 && cl->tolerance != "exact") {
+      // An edge clause applied to an op judges numbers with the looser of the two classes; an
+      // "outcome" clause (status and NaN pattern only) judges any number with the op's class.
+      const std::string main = main_clause_of(op);
+      const auto* mc = spec.find_clause(main);
+      if (mc && spec.lookup(mc->tolerance).kind == "eps" &&
+          (cl->tolerance == "outcome" ||
+           spec.lookup(mc->tolerance).strict_value() > spec.lookup(cl->tolerance).strict_value()))
+        check.tolerance = mc->tolerance;
+    }
+    if (!check.cases.empty()) checks.push_back(std::move(check));
+  }
+  return checks;
+}
+
+}  // namespace rotorcert::engine

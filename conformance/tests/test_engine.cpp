@@ -1,0 +1,151 @@
+// The differential engine judged on implementations whose defects are known: a correct one, one
+// a few eps off, one that forgets to normalise, one that hides bad input behind a valid-looking
+// answer, one that reports DOMAIN_ERROR but leaves numbers behind, and one without the op.
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include <rotorcert/engine/runner.hpp>
+#include <rotorcert/impl_table.hpp>
+#include <rotorcert/testing/clause.hpp>
+
+namespace {
+
+using namespace rotorcert;
+namespace ri = rotorcert::impl;
+using Q = ri::Quat<double>;
+
+constexpr const char* kNoClauses[] = {nullptr};
+
+/// q/|q| with power-of-two scaling: what NORM-1 asks for.
+bool normalize_exact(const Q& q, Q& out) {
+  double m = 0;
+  for (double x : q) {
+    if (!std::isfinite(x)) return false;  // std::max would skip a NaN
+    m = std::max(m, std::abs(x));
+  }
+  if (!(m > 0)) return false;
+  const int e = -std::ilogb(m);
+  Q s;
+  for (int i = 0; i < 4; ++i) s[i] = std::scalbn(q[i], e);
+  const double n = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + s[3] * s[3]);
+  for (int i = 0; i < 4; ++i) out[i] = s[i] / n;
+  return true;
+}
+
+template <int Defect>
+struct Normalizer {
+  using Scalar = double;
+  static constexpr const char* name = "engine_test";
+  static constexpr const char* version = "0";
+  static constexpr const char* description = "synthetic implementation for the engine's own test";
+  static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_ROBUST;
+  static constexpr const char* const* clauses = kNoClauses;
+
+  static ri::Status normalize(const Q& q, Q& out) {
+    if constexpr (Defect == 1) {  // an identity answer for bad input, status OK (GLM's habit)
+      if (!normalize_exact(q, out)) out = {0, 0, 0, 1};
+      return ri::Status::ok;
+    }
+    if (!normalize_exact(q, out)) return ri::Status::domain_error;
+    if constexpr (Defect == 2) {  // rotated by 30 eps about z: within NORM-1's loose bar, not its strict one
+      const double h = 15 * std::numeric_limits<double>::epsilon();
+      const Q r = out;
+      out = {r[0] * std::cos(h) + r[1] * std::sin(h), r[1] * std::cos(h) - r[0] * std::sin(h),
+             r[2] * std::cos(h) + r[3] * std::sin(h), r[3] * std::cos(h) - r[2] * std::sin(h)};
+    }
+    if constexpr (Defect == 3) out = q;  // forgets to normalise
+    return ri::Status::ok;
+  }
+};
+
+/// Reports DOMAIN_ERROR for bad input but writes zeros instead of NaN (bypasses the adaptor).
+struct ZerosOnError : Normalizer<0> {
+  static int normalize_batch(std::size_t n, const double* q, double* out, std::uint8_t* status) {
+    for (std::size_t i = 0; i < n; ++i) {
+      Q in{q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, r{};
+      const bool ok = normalize_exact(in, r);
+      for (int c = 0; c < 4; ++c) out[4 * i + c] = ok ? r[c] : 0.0;
+      status[i] = ok ? RC_OK : RC_DOMAIN_ERROR;
+    }
+    return 0;
+  }
+};
+
+const spec::Spec& the_spec() {
+  static const spec::Spec s = spec::load_spec(spec::resolve_spec_dir());
+  return s;
+}
+
+engine::ClauseResult run(const rc_impl* table, const char* clause) {
+  engine::CaseOptions options;
+  options.cases_per_family = 16;
+  return engine::run_clause(*table, the_spec(), clause, options);
+}
+
+TEST(Engine, ACorrectNormalizePasses) {
+  RC_CLAUSE("TOL-1");
+  const auto r = run(ri::table<Normalizer<0>>(), "NORM-1");
+  EXPECT_EQ(r.outcome, engine::Outcome::pass) << r.worst_detail;
+  EXPECT_GT(r.cases, 16u);  // worked examples and the random family
+  EXPECT_EQ(run(ri::table<Normalizer<0>>(), "EDGE-6").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, AFewEpsOffIsAQualityWarning) {
+  RC_CLAUSE("TOL-1");
+  const auto r = run(ri::table<Normalizer<2>>(), "NORM-1");
+  EXPECT_EQ(r.outcome, engine::Outcome::quality_warning) << r.worst_error;
+  EXPECT_GT(r.worst_error, 4);   // beyond eps4's strict bar
+  EXPECT_LT(r.worst_error, 64);  // within its loose bar
+}
+
+TEST(Engine, AnUnnormalisedResultFailsWithItsWorstInputInHexfloat) {
+  RC_CLAUSE("TOL-1");
+  const auto r = run(ri::table<Normalizer<3>>(), "NORM-1");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_input.find("0x"), std::string::npos) << r.worst_input;
+  EXPECT_GT(r.failures, 0u);
+}
+
+TEST(Engine, BadInputAnsweredWithAValidLookingValueFails) {
+  RC_CLAUSE("RESULT-2");
+  const auto r = run(ri::table<Normalizer<1>>(), "EDGE-6");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_detail.find("expected DOMAIN_ERROR"), std::string::npos) << r.worst_detail;
+}
+
+TEST(Engine, DomainErrorWithoutNaNOutputsFails) {
+  RC_CLAUSE("RESULT-2");
+  const auto r = run(ri::table<ZerosOnError>(), "EDGE-7");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_detail.find("all outputs NaN"), std::string::npos) << r.worst_detail;
+  // The same implementation is fine where its statuses are right.
+  EXPECT_EQ(run(ri::table<ZerosOnError>(), "NORM-1").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, AMissingOpIsNotSupported) {
+  RC_CLAUSE("RESULT-2");
+  const auto r = run(ri::table<Normalizer<0>>(), "SLERP-1");
+  EXPECT_EQ(r.outcome, engine::Outcome::not_supported);
+  EXPECT_EQ(r.cases, 0u);
+}
+
+TEST(Engine, SameSeedSameCases) {
+  RC_CLAUSE("TOL-1");
+  engine::CaseOptions a, b;
+  a.seed = b.seed = 7;
+  const auto supported = [](const std::string&) { return true; };
+  const auto x = engine::checks_for_clause(the_spec(), "SLERP-1", ref::Format::binary32, a, supported);
+  const auto y = engine::checks_for_clause(the_spec(), "SLERP-1", ref::Format::binary32, b, supported);
+  ASSERT_EQ(x.size(), y.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    ASSERT_EQ(x[i].cases.size(), y[i].cases.size());
+    for (std::size_t j = 0; j < x[i].cases.size(); ++j) EXPECT_EQ(x[i].cases[j].inputs, y[i].cases[j].inputs);
+  }
+  b.seed = 8;
+  const auto z = engine::checks_for_clause(the_spec(), "SLERP-1", ref::Format::binary32, b, supported);
+  EXPECT_NE(x.back().cases.back().inputs, z.back().cases.back().inputs);
+}
+
+}  // namespace
