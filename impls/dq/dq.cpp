@@ -1,0 +1,387 @@
+// dq: dual quaternions for skinning, written here from the spec's formulas (no library).
+//
+// Data: the ABI arrays themselves (impl.hpp): quaternion [x, y, z, w], vector [x, y, z], dual
+// quaternion [real xyzw, dual xyzw] with sigma = real + eps dual, dual = 1/2 t real (DQ-1).
+// Inside, small structs with named fields (Quat, Vec, Dual) and short scalar functions in the
+// format under test (float or double), in the manner of ozz-animation: no heap, no tables.
+//
+// Defined outcomes (EDGE-5 .. EDGE-9): a non-finite component anywhere, a zero real part (or a
+// zero rotation), or bad weights give DOMAIN_ERROR (the adaptor writes the NaNs). A non-unit
+// rotation stands for q/|q|, a non-unit dual quaternion for its DQ-4 normalisation; every
+// normalisation first scales by a power of two near the largest |component| (exact), so that
+// subnormal and near-overflow inputs keep full accuracy.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/impl_table.hpp>
+
+namespace {
+
+namespace rci = rotorcert::impl;
+namespace runtime = rotorcert::runtime;
+using rci::Status;
+
+// ---- small value types ------------------------------------------------------------------------
+
+template <class S> struct Vec { S x, y, z; };
+template <class S> struct Quat { S x, y, z, w; };   // q = w + x i + y j + z k
+template <class S> struct Dual { Quat<S> r, d; };   // sigma = r + eps d
+
+template <class S> Quat<S> load(const rci::Quat<S>& a) { return {a[0], a[1], a[2], a[3]}; }
+template <class S> Vec<S> load(const rci::Vec3<S>& a) { return {a[0], a[1], a[2]}; }
+template <class S> Dual<S> load(const rci::DualQuat<S>& a) {
+  return {{a[0], a[1], a[2], a[3]}, {a[4], a[5], a[6], a[7]}};
+}
+template <class S> rci::Quat<S> store(const Quat<S>& q) { return {q.x, q.y, q.z, q.w}; }
+template <class S> rci::Vec3<S> store(const Vec<S>& v) { return {v.x, v.y, v.z}; }
+template <class S> rci::DualQuat<S> store(const Dual<S>& s) {
+  return {s.r.x, s.r.y, s.r.z, s.r.w, s.d.x, s.d.y, s.d.z, s.d.w};
+}
+
+template <class S> Vec<S> operator+(const Vec<S>& a, const Vec<S>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class S> Vec<S> operator-(const Vec<S>& a, const Vec<S>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class S> Vec<S> operator*(S k, const Vec<S>& a) { return {k * a.x, k * a.y, k * a.z}; }
+template <class S> S dot(const Vec<S>& a, const Vec<S>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <class S> Vec<S> cross(const Vec<S>& a, const Vec<S>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+template <class S> Vec<S> vec(const Quat<S>& q) { return {q.x, q.y, q.z}; }
+template <class S> Quat<S> operator+(const Quat<S>& a, const Quat<S>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+template <class S> Quat<S> operator-(const Quat<S>& a, const Quat<S>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w};
+}
+template <class S> Quat<S> operator-(const Quat<S>& a) { return {-a.x, -a.y, -a.z, -a.w}; }
+template <class S> Quat<S> operator*(S k, const Quat<S>& a) { return {k * a.x, k * a.y, k * a.z, k * a.w}; }
+template <class S> Quat<S> operator/(const Quat<S>& a, S k) { return {a.x / k, a.y / k, a.z / k, a.w / k}; }
+template <class S> S dot(const Quat<S>& a, const Quat<S>& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
+template <class S> Quat<S> conj(const Quat<S>& q) { return {-q.x, -q.y, -q.z, q.w}; }
+
+/// Hamilton product (QUAT-1): ij = k.
+template <class S> Quat<S> operator*(const Quat<S>& a, const Quat<S>& b) {
+  return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+          a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
+}
+
+/// DQ-2: (a_r b_r) + eps (a_r b_d + a_d b_r); apply b first.
+template <class S> Dual<S> operator*(const Dual<S>& a, const Dual<S>& b) { return {a.r * b.r, a.r * b.d + a.d * b.r}; }
+
+// ---- input checks -------------------------------------------------------------------------------
+
+template <class S> bool finite(S x) { return std::isfinite(x); }
+template <class S> bool finite(const Vec<S>& v) { return finite(v.x) && finite(v.y) && finite(v.z); }
+template <class S> bool finite(const Quat<S>& q) { return finite(q.x) && finite(q.y) && finite(q.z) && finite(q.w); }
+template <class S> bool is_zero(const Quat<S>& q) { return q.x == 0 && q.y == 0 && q.z == 0 && q.w == 0; }
+/// A usable rotation: finite and nonzero (EDGE-6, EDGE-7).
+template <class S> bool valid(const Quat<S>& q) { return finite(q) && !is_zero(q); }
+/// A usable dual quaternion: every component finite, the real part nonzero.
+template <class S> bool valid(const Dual<S>& s) { return valid(s.r) && finite(s.d); }
+
+/// EDGE-9: at least one weight, every weight finite and >= 0 (-0 counts as 0), some weight > 0.
+/// Returns the largest weight (the blends divide by it so that their sums cannot overflow), or
+/// 0 when the weights are bad.
+template <class S> S largest_weight(std::span<const S> w) {
+  S largest = 0;
+  for (S x : w) {
+    if (!finite(x) || x < 0) return 0;
+    largest = std::max(largest, x);
+  }
+  return largest;
+}
+
+// ---- quaternions ----------------------------------------------------------------------------------
+
+/// Binary exponent of the largest |component|: q scaled by 2^-e has its largest component in
+/// [1, 2), exactly (a power of two), so squares neither overflow nor underflow.
+template <class S> int scale_exponent(const Quat<S>& q) {
+  using std::abs;
+  return std::ilogb(std::max({abs(q.x), abs(q.y), abs(q.z), abs(q.w)}));
+}
+template <class S> Quat<S> scaled(const Quat<S>& q, int e) {
+  return {std::scalbn(q.x, e), std::scalbn(q.y, e), std::scalbn(q.z, e), std::scalbn(q.w, e)};
+}
+
+/// The sign of a.b for the hemisphere rules, from the inputs as given (separately normalised
+/// copies would turn an exact 0 into +-tiny).
+template <class S> int hemisphere_dot(const Quat<S>& a, const Quat<S>& b) {
+  return runtime::hemisphere_sign<S>({a.x, a.y, a.z, a.w}, {b.x, b.y, b.z, b.w});
+}
+
+/// NORM-1: q/|q| for finite nonzero q.
+template <class S> Quat<S> normalized(const Quat<S>& q) {
+  const Quat<S> s = scaled(q, -scale_exponent(q));
+  return s / std::sqrt(dot(s, s));
+}
+
+/// R v ~R for unit q in the form v + w t + u x t with t = 2 u x v (15 multiplies; no matrix).
+template <class S> Vec<S> rotate(const Quat<S>& q, const Vec<S>& v) {
+  const Vec<S> u = vec(q);
+  const Vec<S> t = S(2) * cross(u, v);
+  return v + q.w * t + cross(u, t);
+}
+
+// ---- dual quaternions ------------------------------------------------------------------------------
+
+/// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| after a
+/// common exact power-of-two scaling of both parts (the formula is invariant under it).
+template <class S> Dual<S> normalized(const Dual<S>& s) {
+  const int e = -scale_exponent(s.r);
+  const Quat<S> r = scaled(s.r, e), d = scaled(s.d, e);
+  const S n = std::sqrt(dot(r, r));
+  const Quat<S> ru = r / n;
+  return {ru, (d - dot(ru, d) * ru) / n};
+}
+
+/// DQ-1: (q_r, 1/2 t q_r) for a unit q_r. With t pure, t q_r = (-t.v, w t + t x v).
+template <class S> Dual<S> from_rotation_translation(const Quat<S>& ru, const Vec<S>& t) {
+  const Vec<S> v = vec(ru);
+  const Vec<S> dv = S(0.5) * (ru.w * t + cross(t, v));
+  return {ru, {dv.x, dv.y, dv.z, S(-0.5) * dot(t, v)}};
+}
+
+/// t = 2 vec(d r*) of a unit dual quaternion: 2 (r_w d_v - d_w r_v + r_v x d_v). The part of d
+/// along r only feeds the scalar part, so d need not be orthogonal to r.
+template <class S> Vec<S> translation(const Dual<S>& u) {
+  const Vec<S> rv = vec(u.r), dv = vec(u.d);
+  return S(2) * (u.r.w * dv - u.d.w * rv + cross(rv, dv));
+}
+
+/// DQ-3 the fast way: p' = R p + t, with r and d divided by |r| (no projection needed: see
+/// translation()).
+template <class S> Vec<S> apply_point(const Dual<S>& s, const Vec<S>& p) {
+  const int e = -scale_exponent(s.r);
+  const Quat<S> r = scaled(s.r, e), d = scaled(s.d, e);
+  const S n = std::sqrt(dot(r, r));
+  const Dual<S> u{r / n, d / n};
+  return rotate(u.r, p) + translation(u);
+}
+
+/// Screw power u^t = exp(t log u) of a unit dual quaternion with real part w >= 0 (after the
+/// hemisphere flip), by its screw parameters (Kavan et al. 2008):
+///   u = cos(h^) + sin(h^) (l + eps m),  h^ = h + eps h_d  (half dual angle),
+///   u^t = (cos th, sin th l) + eps (-t h_d sin th, sin(th) m + t h_d cos(th) l).
+/// Reading off u = (w, s l) + eps (d_w, d_v): s = sin h, h = atan2(s, w), and (with r.d = 0)
+///   h_d = w (l.d_v) - s d_w,   s m = d_v - h_d w l,
+/// so the dual vector is a d_v + h_d (t cos th - a w) l with a = sin(th)/s. The bracket is
+/// O(h^2) and loses relative accuracy as h -> 0, but it is multiplied by h_d l only: the
+/// absolute error stays ~eps |h_d|, and no quotient is 0/0 while s > 0. s = 0 is a pure
+/// translation: u^t = 1 + eps t d (linear in t).
+template <class S> Dual<S> screw_power(const Dual<S>& u, S t) {
+  const Vec<S> v = vec(u.r), dv = vec(u.d);
+  const S s = std::sqrt(dot(v, v));
+  if (s == 0) return {{0, 0, 0, 1}, t * u.d};
+  const S w = u.r.w;
+  const S h = std::atan2(s, w);
+  const Vec<S> l = (S(1) / s) * v;
+  const S sn = std::sin(t * h), cs = std::cos(t * h);
+  const S a = sn / s;
+  const S hd = w * dot(l, dv) - s * u.d.w;
+  const Vec<S> rv = sn * l;
+  const Vec<S> dual_v = a * dv + (hd * (t * cs - a * w)) * l;
+  return {{rv.x, rv.y, rv.z, cs}, {dual_v.x, dual_v.y, dual_v.z, -t * hd * sn}};
+}
+
+/// DQ-5 on validated input: both DQ-4 normalised, b' = -b iff a_r.b_r < 0 strictly (EDGE-3,
+/// decided on the inputs), then a (a* b')^t.
+template <class S> Dual<S> sclerp(const Dual<S>& a_in, const Dual<S>& b_in, S t) {
+  const Dual<S> a = normalized(a_in);
+  Dual<S> b = normalized(b_in);
+  if (hemisphere_dot(a_in.r, b_in.r) < 0) b = {-b.r, -b.d};
+  const Dual<S> rel = Dual<S>{conj(a.r), conj(a.d)} * b;
+  return a * screw_power(rel, t);
+}
+
+/// DQ-6 (DLB, Kavan et al. 2008) on validated input: s_i = -1 iff r_i.r_p < 0 against the
+/// pivot p (first weight > 0), decided on the real parts as given (`real(i)`); the sum of
+/// (w_i / w_max) s_i sigma_i over the unit influences `unit(i)` (EDGE-5: a non-unit input stands
+/// for its DQ-4 normalisation), then DQ-4 of the sum.
+template <class S, class Real, class Unit>
+Dual<S> dlb(std::size_t k, Real real, Unit unit, std::span<const S> w, S w_max) {
+  std::size_t p = 0;
+  while (!(w[p] > 0)) ++p;
+  const Quat<S> pivot = real(p);
+  Dual<S> sum{{0, 0, 0, 0}, {0, 0, 0, 0}};
+  for (std::size_t i = 0; i < k; ++i) {
+    const Dual<S> u = unit(i);
+    const S f = hemisphere_dot(real(i), pivot) < 0 ? -(w[i] / w_max) : w[i] / w_max;
+    sum = {sum.r + f * u.r, sum.d + f * u.d};
+  }
+  return normalized(sum);
+}
+
+/// Validation shared by SKIN-1 and SKIN-2 (EDGE-6, EDGE-7, EDGE-9): returns the largest weight,
+/// 0 when the input is outside the domain.
+template <class S>
+S skin_input_ok(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t, std::span<const S> w,
+                const rci::Vec3<S>& v) {
+  if (q.empty() || q.size() != t.size() || q.size() != w.size() || !finite(load(v))) return 0;
+  for (std::size_t i = 0; i < q.size(); ++i)
+    if (!valid(load(q[i])) || !finite(load(t[i]))) return 0;
+  return largest_weight(w);
+}
+
+// ---- the implementation ----------------------------------------------------------------------------
+
+template <class S>
+struct Dq {
+  using Scalar = S;
+  static constexpr const char* name = "dq";
+  static constexpr const char* version = "0.1.0";
+  static constexpr const char* description =
+      "dual quaternions written from the spec (DQ-1..6, ScLERP by screw parameters, DLB, LBS/DQS)";
+  // Core: only the clauses listed (no matrices, axis-angle); the bit marks that Core clauses are claimed.
+  static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
+  static constexpr const char* const clauses[] = {
+      "NORM-1", "COMPOSE-1", "INV-1",  "APPLY-1", "QUAT-2",                                  // Core (partial)
+      "DQ-1",   "DQ-2",      "DQ-3",   "DQ-4",    "DQ-5",   "DQ-6",   "AXIS-1",              // Rigid
+      "SKIN-1", "SKIN-2",    "SKIN-3",                                                       // Skinning
+      "EDGE-1", "EDGE-2",    "EDGE-3", "EDGE-4",  "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9",  // Robust
+      nullptr};
+
+  // -- Core: the quaternion operations of the real part ----------------------------------------
+
+  static Status normalize(const rci::Quat<S>& q, rci::Quat<S>& out) {
+    if (!valid(load(q))) return Status::domain_error;
+    out = store(normalized(load(q)));
+    return Status::ok;
+  }
+
+  /// COMPOSE-1: the exact product of the inputs as given (no normalisation).
+  static Status compose(const rci::Quat<S>& a, const rci::Quat<S>& b, rci::Quat<S>& out) {
+    if (!valid(load(a)) || !valid(load(b))) return Status::domain_error;
+    out = store(load(a) * load(b));
+    return Status::ok;
+  }
+
+  /// INV-1: q*/|q|^2 = 2^-e (q_s*/|q_s|^2) with q_s = 2^-e q: no overflow of |q|^2 for large
+  /// q and no underflow for subnormal q.
+  static Status inverse(const rci::Quat<S>& q_in, rci::Quat<S>& out) {
+    const Quat<S> q = load(q_in);
+    if (!valid(q)) return Status::domain_error;
+    const int e = scale_exponent(q);
+    const Quat<S> s = scaled(q, -e);
+    out = store(scaled(conj(s) / dot(s, s), -e));
+    return Status::ok;
+  }
+
+  static Status apply_vector(const rci::Quat<S>& q, const rci::Vec3<S>& v, rci::Vec3<S>& out) {
+    if (!valid(load(q)) || !finite(load(v))) return Status::domain_error;
+    out = store(rotate(normalized(load(q)), load(v)));
+    return Status::ok;
+  }
+
+  // -- Rigid ------------------------------------------------------------------------------------
+
+  static Status dq_from_rotation_translation(const rci::Quat<S>& q, const rci::Vec3<S>& t, rci::DualQuat<S>& out) {
+    if (!valid(load(q)) || !finite(load(t))) return Status::domain_error;
+    out = store(from_rotation_translation(normalized(load(q)), load(t)));
+    return Status::ok;
+  }
+
+  /// DQ-2 of the normalised inputs (a non-unit input stands for its DQ-4 normalisation).
+  static Status dq_compose(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, rci::DualQuat<S>& out) {
+    if (!valid(load(a)) || !valid(load(b))) return Status::domain_error;
+    out = store(normalized(load(a)) * normalized(load(b)));
+    return Status::ok;
+  }
+
+  static Status dq_apply_point(const rci::DualQuat<S>& d, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
+    if (!valid(load(d)) || !finite(load(p))) return Status::domain_error;
+    out = store(apply_point(load(d), load(p)));
+    return Status::ok;
+  }
+
+  static Status dq_normalize(const rci::DualQuat<S>& d, rci::DualQuat<S>& out) {
+    if (!valid(load(d))) return Status::domain_error;
+    out = store(normalized(load(d)));
+    return Status::ok;
+  }
+
+  static Status dq_sclerp(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, const S& t, rci::DualQuat<S>& out) {
+    if (!valid(load(a)) || !valid(load(b)) || !finite(t)) return Status::domain_error;
+    out = store(sclerp(load(a), load(b), t));
+    return Status::ok;
+  }
+
+  static Status dq_blend(std::span<const rci::DualQuat<S>> d, std::span<const S> w, rci::DualQuat<S>& out) {
+    if (d.empty() || d.size() != w.size()) return Status::domain_error;
+    for (const auto& x : d)
+      if (!valid(load(x))) return Status::domain_error;
+    const S w_max = largest_weight(w);
+    if (!(w_max > 0)) return Status::domain_error;
+    out = store(dlb<S>(
+        d.size(), [&](std::size_t i) { return load(d[i]).r; }, [&](std::size_t i) { return normalized(load(d[i])); }, w,
+        w_max));
+    return Status::ok;
+  }
+
+  /// AXIS-1 as a dual quaternion: T(c) R T(-c) = (q, 1/2 (c q - q c)), then DQ-3. Its
+  /// translation is c - R c, so p' = R p + (c - R c) = R (p - c) + c.
+  static Status rotate_about_axis(const rci::Vec3<S>& c_in, const rci::Vec3<S>& u_in, const S& angle,
+                                  const rci::Vec3<S>& p, rci::Vec3<S>& out) {
+    const Vec<S> c = load(c_in), u = load(u_in);
+    if (!finite(c) || !finite(u) || !finite(angle) || !finite(load(p))) return Status::domain_error;
+    if (u.x == 0 && u.y == 0 && u.z == 0) return Status::domain_error;
+    const Quat<S> axis = normalized(Quat<S>{u.x, u.y, u.z, 0});
+    const S sn = std::sin(angle / 2), cs = std::cos(angle / 2);
+    const Quat<S> q{sn * axis.x, sn * axis.y, sn * axis.z, cs};
+    const Quat<S> cq{c.x, c.y, c.z, 0};
+    const Dual<S> sigma{q, S(0.5) * (cq * q - q * cq)};
+    out = store(rotate(q, load(p)) + translation(sigma));
+    return Status::ok;
+  }
+
+  // -- Skinning ---------------------------------------------------------------------------------
+
+  /// SKIN-1: the blended matrix sum w_i M_i (MAT-1 of q_i/|q_i|) and translation sum w_i t_i,
+  /// applied to v and divided by W (weights first divided by the largest one).
+  static Status skin_linear(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t, std::span<const S> w,
+                            const rci::Vec3<S>& v_in, rci::Vec3<S>& out) {
+    const S w_max = skin_input_ok(q, t, w, v_in);
+    if (!(w_max > 0)) return Status::domain_error;
+    S m[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // column-major
+    Vec<S> tsum{0, 0, 0};
+    S total = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const S f = w[i] / w_max;
+      const Quat<S> r = normalized(load(q[i]));
+      const S xx = r.x * r.x, yy = r.y * r.y, zz = r.z * r.z, xy = r.x * r.y, xz = r.x * r.z, yz = r.y * r.z;
+      const S wx = r.w * r.x, wy = r.w * r.y, wz = r.w * r.z;
+      const S mi[9] = {1 - 2 * (yy + zz), 2 * (xy + wz),     2 * (xz - wy),
+                       2 * (xy - wz),     1 - 2 * (xx + zz), 2 * (yz + wx),
+                       2 * (xz + wy),     2 * (yz - wx),     1 - 2 * (xx + yy)};
+      for (int j = 0; j < 9; ++j) m[j] += f * mi[j];
+      tsum = tsum + f * load(t[i]);
+      total += f;
+    }
+    const Vec<S> v = load(v_in);
+    const Vec<S> mv{m[0] * v.x + m[3] * v.y + m[6] * v.z, m[1] * v.x + m[4] * v.y + m[7] * v.z,
+                    m[2] * v.x + m[5] * v.y + m[8] * v.z};
+    out = store((S(1) / total) * (mv + tsum));
+    return Status::ok;
+  }
+
+  /// SKIN-2: sigma_i = DQ-1(q_i, t_i) (unit by construction), DLB, DQ-3.
+  static Status skin_dual_quaternion(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t,
+                                     std::span<const S> w, const rci::Vec3<S>& v, rci::Vec3<S>& out) {
+    const S w_max = skin_input_ok(q, t, w, v);
+    if (!(w_max > 0)) return Status::domain_error;
+    const auto influence = [&](std::size_t i) { return from_rotation_translation(normalized(load(q[i])), load(t[i])); };
+    const Dual<S> sigma = dlb<S>(q.size(), [&](std::size_t i) { return load(q[i]); }, influence, w, w_max);
+    out = store(rotate(sigma.r, load(v)) + translation(sigma));
+    return Status::ok;
+  }
+};
+
+}  // namespace
+
+ROTORCERT_DEFINE_ENTRY(dq, Dq<float>, Dq<double>)

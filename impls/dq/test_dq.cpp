@@ -1,0 +1,440 @@
+// Implementation-specific facts of `dq` (impls/dq/dq.cpp), through its ABI tables, and a short
+// smoke check against the reference (the systematic differential run is the suite's job).
+// Tolerances are the spec's eps class bars (spec/clauses.json), never ad-hoc epsilons.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <span>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <rotorcert/impl.hpp>
+#include <rotorcert/reference/metrics.hpp>
+#include <rotorcert/reference/rigid_ops.hpp>
+#include <rotorcert/reference/rotation_ops.hpp>
+#include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/tolerance.hpp>
+
+extern "C" const rc_impl* rotorcert_impl_entry_dq(std::uint32_t abi, std::uint32_t index);
+
+namespace {
+
+namespace ref = rotorcert::ref;
+namespace cl = rotorcert::ref::clause;
+using ref::Real;
+using rotorcert::testing::eps_class_bars;
+template <class S> using Q = rotorcert::impl::Quat<S>;
+template <class S> using V = rotorcert::impl::Vec3<S>;
+template <class S> using D = rotorcert::impl::DualQuat<S>;
+
+// ---- the tables and single-element calls ----------------------------------------------------------
+
+template <class S> const rotorcert::impl::Ops<S>& ops() {
+  if constexpr (std::is_same_v<S, float>) return *rotorcert_impl_entry_dq(RC_ABI_VERSION, 0)->f32;
+  else return *rotorcert_impl_entry_dq(RC_ABI_VERSION, 1)->f64;
+}
+
+template <class S> Real eps() { return ref::format_epsilon<Real>(std::is_same_v<S, float> ? ref::Format::binary32 : ref::Format::binary64); }
+double strict(const char* cls) { return eps_class_bars(cls).strict; }
+
+template <class S> D<S> normalize_dq(const D<S>& d, std::uint8_t& st) {
+  D<S> out;
+  ops<S>().dq_normalize(1, d.data(), out.data(), &st);
+  return out;
+}
+template <class S> D<S> sclerp(const D<S>& a, const D<S>& b, S t) {
+  D<S> out;
+  std::uint8_t st = 9;
+  ops<S>().dq_sclerp(1, a.data(), b.data(), &t, out.data(), &st);
+  EXPECT_EQ(st, RC_OK);
+  return out;
+}
+template <class S> V<S> skin(bool dual, const std::vector<Q<S>>& q, const std::vector<V<S>>& t, const std::vector<S>& w,
+                             const V<S>& v, std::uint8_t& st) {
+  V<S> out;
+  const auto f = dual ? ops<S>().skin_dual_quaternion : ops<S>().skin_linear;
+  f(1, q.size(), q.front().data(), t.front().data(), w.data(), v.data(), out.data(), &st);
+  return out;
+}
+
+// ---- conversions to the reference's types (exact) ----------------------------------------------
+
+template <class S> ref::Quaternion<Real> rq(const Q<S>& q) { return {Real(q[3]), Real(q[0]), Real(q[1]), Real(q[2])}; }
+template <class S> ref::DualQuaternion<Real> rd(const D<S>& d) {
+  return {{Real(d[3]), Real(d[0]), Real(d[1]), Real(d[2])}, {Real(d[7]), Real(d[4]), Real(d[5]), Real(d[6])}};
+}
+template <class S> ref::Vec3<Real> rv(const V<S>& v) { return {Real(v[0]), Real(v[1]), Real(v[2])}; }
+Real norm3(const ref::Vec3<Real>& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+ref::Vec3<Real> sub3(const ref::Vec3<Real>& a, const ref::Vec3<Real>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+/// AXIS-1 by its definition, R(p - c) + c with R the rotation by `angle` about u/|u| (APPLY-1 of
+/// the reference). Not the reference's AXIS_1 function: that one is being reworked (reported).
+ref::Vec3<Real> axis_expected(const ref::Vec3<Real>& c, const ref::Vec3<Real>& u, const Real& angle,
+                              const ref::Vec3<Real>& p) {
+  const Real n = norm3(u), h = angle / 2;
+  const ref::Quaternion<Real> q{cos(h), sin(h) * u[0] / n, sin(h) * u[1] / n, sin(h) * u[2] / n};
+  const ref::Vec3<Real> r = cl::APPLY_1_apply_vector(q, sub3(p, c)).value;
+  return {r[0] + c[0], r[1] + c[1], r[2] + c[2]};
+}
+
+/// METRIC-7 in eps units.
+template <class S> double rigid_err(const D<S>& got, const ref::DualQuaternion<Real>& want) {
+  const auto e = cl::METRIC_7_rigid_error(rd(got), want);
+  return (max(e.rotation, e.translation) / eps<S>()).toDouble();
+}
+/// METRIC-3 with a clause's scale, in eps units.
+template <class S> double vec_err(const V<S>& got, const ref::Vec3<Real>& want, const Real& scale) {
+  return (norm3(sub3(rv(got), want)) / scale / eps<S>()).toDouble();
+}
+
+// ---- random inputs (fixed seed: reproducible) --------------------------------------------------------
+
+struct Rng {
+  std::mt19937_64 g{20240611};
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
+  template <class S> Q<S> quat() { return {S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(0.1, 1))}; }
+  template <class S> V<S> vec(double r) { return {S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r))}; }
+  /// A rigid motion from DQ-1 of the table under test.
+  template <class S> D<S> rigid() {
+    const Q<S> q = quat<S>();
+    const V<S> t = vec<S>(10);
+    D<S> d;
+    std::uint8_t st;
+    ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), d.data(), &st);
+    return d;
+  }
+};
+
+template <class F> void both(F f) {
+  f(float{});
+  f(double{});
+}
+
+// ---- facts -------------------------------------------------------------------------------------------
+
+TEST(Dq, NormaliseMakesRealUnitAndDualOrthogonal) {
+  RC_CLAUSE("DQ-4");
+  RC_CLAUSE("EDGE-5");
+  both([](auto tag) {
+    using S = decltype(tag);
+    Rng rng;
+    for (int i = 0; i < 200; ++i) {
+      // Non-unit real part at scales 2^-40 .. 2^40 and a dual part with a component along r.
+      const S k = S(std::ldexp(rng.uniform(0.5, 1), int(rng.uniform(-40, 40))));
+      D<S> d;
+      for (int j = 0; j < 8; ++j) d[j] = k * S(rng.uniform(-2, 2));
+      std::uint8_t st = 9;
+      const D<S> n = normalize_dq(d, st);
+      ASSERT_EQ(st, RC_OK);
+      const auto r = rd(n);
+      EXPECT_LE((abs(ref::norm(r.real) - 1) / eps<S>()).toDouble(), strict("eps16"));
+      EXPECT_LE((abs(ref::dot(r.real, r.dual)) / eps<S>()).toDouble(), strict("eps16"));
+      EXPECT_LE(rigid_err(n, cl::DQ_4_normalize(rd(d)).value), strict("eps16"));
+    }
+  });
+}
+
+TEST(Dq, SclerpOfPureTranslationIsLinearInT) {
+  RC_CLAUSE("DQ-5");
+  both([](auto tag) {
+    using S = decltype(tag);
+    Rng rng;
+    for (int i = 0; i < 50; ++i) {
+      const V<S> ta = rng.vec<S>(100), tb = rng.vec<S>(100);
+      const S k = S(rng.uniform(0.25, 4));  // non-unit representatives
+      const D<S> a{0, 0, 0, k, k * ta[0] / 2, k * ta[1] / 2, k * ta[2] / 2, 0};
+      const D<S> b{0, 0, 0, 1, tb[0] / 2, tb[1] / 2, tb[2] / 2, 0};
+      for (const S t : {S(-1.5), S(0), S(0.25), S(0.5), S(1), S(2.75)}) {
+        const D<S> s = sclerp(a, b, t);
+        // No rotation appears: the real part is the identity exactly.
+        EXPECT_EQ(s[0], 0);
+        EXPECT_EQ(s[1], 0);
+        EXPECT_EQ(s[2], 0);
+        EXPECT_EQ(s[3], 1);
+        ref::Vec3<Real> want;
+        for (int j = 0; j < 3; ++j) want[j] = Real(ta[j]) + Real(t) * (Real(tb[j]) - Real(ta[j]));
+        const ref::Vec3<Real> got{2 * Real(s[4]), 2 * Real(s[5]), 2 * Real(s[6])};
+        EXPECT_LE((norm3(sub3(got, want)) / max(Real(1), norm3(want)) / eps<S>()).toDouble(), strict("eps32"));
+      }
+    }
+  });
+}
+
+TEST(Dq, SclerpNearZeroRotationHasNoZeroOverZero) {
+  RC_CLAUSE("DQ-5");
+  RC_CLAUSE("EDGE-2");
+  both([](auto tag) {
+    using S = decltype(tag);
+    Rng rng;
+    for (const double angle : {1e-30, 1e-9, 1e-6, 1e-3, 0.5}) {
+      const D<S> a = rng.rigid<S>();
+      // b = a composed with a small screw about a random axis: rotation `angle`, offset axis.
+      const V<S> axis = rng.vec<S>(1);
+      const S sn = S(std::sin(angle / 2)), cs = S(std::cos(angle / 2));
+      const double len = std::sqrt(double(axis[0]) * axis[0] + double(axis[1]) * axis[1] + double(axis[2]) * axis[2]);
+      const Q<S> q{S(sn * axis[0] / len), S(sn * axis[1] / len), S(sn * axis[2] / len), cs};
+      const V<S> t = rng.vec<S>(5);
+      D<S> small, b;
+      std::uint8_t st;
+      ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), small.data(), &st);
+      ops<S>().dq_compose(1, a.data(), small.data(), b.data(), &st);
+      for (const S tt : {S(0.3), S(-2)}) {
+        const D<S> s = sclerp(a, b, tt);
+        for (S x : s) EXPECT_TRUE(std::isfinite(x));
+        EXPECT_LE(rigid_err(s, cl::DQ_5_sclerp(rd(a), rd(b), Real(tt)).value), strict("eps32")) << angle;
+      }
+    }
+  });
+}
+
+/// Candy wrapper: a vertex at radius r around the bone axis x, two influences that twist by +theta
+/// and -theta about the bone with equal weights. LBS averages the two positions and pulls the
+/// vertex onto the axis by |cos theta| (at theta = pi/2 to the axis itself); DQS blends the
+/// rigid motions and keeps the radius.
+TEST(Dq, CandyWrapperLbsShrinksDqsKeepsRadius) {
+  RC_CLAUSE("SKIN-1");
+  RC_CLAUSE("SKIN-2");
+  both([](auto tag) {
+    using S = decltype(tag);
+    for (int k = 1; k < 16; ++k) {
+      const double theta = k * 3.14159265358979323846 / 16;
+      const S sn = S(std::sin(theta / 2)), cs = S(std::cos(theta / 2));
+      const std::vector<Q<S>> q{{sn, 0, 0, cs}, {-sn, 0, 0, cs}};
+      const std::vector<V<S>> t{{0, 0, 0}, {0, 0, 0}};
+      const std::vector<S> w{S(0.5), S(0.5)};
+      const V<S> v{S(0.75), S(1.5), S(0)};
+      const Real radius(v[1]);
+      std::uint8_t st1 = 9, st2 = 9;
+      const V<S> lbs = skin<S>(false, q, t, w, v, st1), dqs = skin<S>(true, q, t, w, v, st2);
+      ASSERT_EQ(st1, RC_OK);
+      ASSERT_EQ(st2, RC_OK);
+      // The exact radii of the quaternions as rounded: cos theta = cs^2 - sn^2 over |q|^2.
+      const Real c2 = (Real(cs) * Real(cs) - Real(sn) * Real(sn)) / (Real(cs) * Real(cs) + Real(sn) * Real(sn));
+      const Real scale = max(Real(1), norm3(rv(v)));
+      const auto radius_of = [](const V<S>& p) { return sqrt(Real(p[1]) * Real(p[1]) + Real(p[2]) * Real(p[2])); };
+      EXPECT_LE((abs(radius_of(lbs) - radius * abs(c2)) / scale / eps<S>()).toDouble(), strict("eps64")) << theta;
+      EXPECT_LE((abs(radius_of(dqs) - radius) / scale / eps<S>()).toDouble(), strict("eps64")) << theta;
+      // Both leave the position along the bone alone.
+      EXPECT_LE((abs(Real(lbs[0]) - Real(v[0])) / scale / eps<S>()).toDouble(), strict("eps64"));
+      EXPECT_LE((abs(Real(dqs[0]) - Real(v[0])) / scale / eps<S>()).toDouble(), strict("eps64"));
+    }
+  });
+}
+
+TEST(Dq, IdentityInIdentityOut) {
+  RC_CLAUSE("EDGE-1");
+  both([](auto tag) {
+    using S = decltype(tag);
+    const D<S> id{0, 0, 0, 1, 0, 0, 0, 0};
+    const Q<S> one{0, 0, 0, 1};
+    const V<S> p{S(0.1), S(-7), S(3e5)};
+    std::uint8_t st;
+    D<S> d;
+    ops<S>().dq_compose(1, id.data(), id.data(), d.data(), &st);
+    EXPECT_EQ(d, id);
+    EXPECT_EQ(sclerp(id, id, S(0.37)), id);
+    EXPECT_EQ(sclerp(id, id, S(-4)), id);
+    Q<S> q;
+    ops<S>().compose(1, one.data(), one.data(), q.data(), &st);
+    EXPECT_EQ(q, one);
+    V<S> out;
+    ops<S>().apply_vector(1, one.data(), p.data(), out.data(), &st);
+    EXPECT_EQ(out, p);
+    ops<S>().dq_apply_point(1, id.data(), p.data(), out.data(), &st);
+    EXPECT_EQ(out, p);
+  });
+}
+
+TEST(Dq, SubnormalAndHugeInputsKeepFullAccuracy) {
+  RC_CLAUSE("NORM-1");
+  RC_CLAUSE("INV-1");
+  RC_CLAUSE("EDGE-8");
+  both([](auto tag) {
+    using S = decltype(tag);
+    const S tiny = std::numeric_limits<S>::denorm_min(), huge = std::numeric_limits<S>::max() / 2;
+    std::uint8_t st = 9;
+    Q<S> out;
+    const Q<S> sub{tiny, -S(0), 0, 0};
+    ops<S>().normalize(1, sub.data(), out.data(), &st);
+    EXPECT_EQ(st, RC_OK);
+    EXPECT_EQ(out, (Q<S>{1, -S(0), 0, 0}));
+    EXPECT_TRUE(std::signbit(out[1]));
+    for (const Q<S>& q : {Q<S>{3 * tiny, 0, 4 * tiny, 0}, Q<S>{huge, huge, -huge, huge}}) {
+      ops<S>().normalize(1, q.data(), out.data(), &st);
+      EXPECT_LE((cl::METRIC_1_rotation_distance(rq(out), rq(q)) / eps<S>()).toDouble(), strict("eps4"));
+      EXPECT_LE((cl::METRIC_6_norm_defect(rq(out)) / eps<S>()).toDouble(), strict("eps4"));
+    }
+    // INV-1 of a subnormal quaternion: |q|^2 underflows unless scaled first; the inverse is near
+    // the overflow threshold.
+    const int e = std::is_same_v<S, float> ? -130 : -1026;
+    const Q<S> q{S(3) * std::ldexp(S(1), e), 0, 0, S(4) * std::ldexp(S(1), e)};
+    ops<S>().inverse(1, q.data(), out.data(), &st);
+    EXPECT_EQ(st, RC_OK);
+    const auto want = cl::INV_1_inverse(rq(q)).value;
+    const auto got = rq(out);
+    const Real err = max(max(abs(got.w - want.w), abs(got.x - want.x)), max(abs(got.y - want.y), abs(got.z - want.z)));
+    EXPECT_LE((err / ref::norm(want) / eps<S>()).toDouble(), strict("eps4"));
+  });
+}
+
+TEST(Dq, OutsideTheDomainIsDomainErrorWithNaN) {
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("EDGE-9");
+  both([](auto tag) {
+    using S = decltype(tag);
+    const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
+    const D<S> zero_real{0, -S(0), 0, 0, 1, 0, 0, 0}, good{0, 0, 0, 1, 0, 0, 0, 0}, with_inf{0, 0, 0, 1, inf, 0, 0, 0};
+    const V<S> p{1, 2, 3};
+    for (const D<S>& bad : {zero_real, with_inf}) {
+      std::uint8_t st = 9;
+      V<S> out;
+      ops<S>().dq_apply_point(1, bad.data(), p.data(), out.data(), &st);
+      EXPECT_EQ(st, RC_DOMAIN_ERROR);
+      for (S x : out) EXPECT_TRUE(std::isnan(x));
+    }
+    std::uint8_t st = 9;
+    D<S> out;
+    const S t = nan;
+    ops<S>().dq_sclerp(1, good.data(), good.data(), &t, out.data(), &st);
+    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+    // Bad weight sets: negative, NaN, Inf, all zero (-0 included); and a zero influence with weight 0.
+    const std::array<D<S>, 2> two{good, good};
+    for (const std::array<S, 2>& w : {std::array<S, 2>{1, -1}, {nan, 1}, {inf, 1}, {0, -S(0)}}) {
+      ops<S>().dq_blend(1, 2, two.front().data(), w.data(), out.data(), &st);
+      EXPECT_EQ(st, RC_DOMAIN_ERROR);
+      for (S x : out) EXPECT_TRUE(std::isnan(x));
+    }
+    const std::array<D<S>, 2> with_zero{good, zero_real};
+    const std::array<S, 2> w{1, 0};
+    ops<S>().dq_blend(1, 2, with_zero.front().data(), w.data(), out.data(), &st);
+    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+    // -0 weight first: the pivot is the first positive weight, not index 0.
+    const std::array<D<S>, 2> pivot_test{D<S>{0, 0, 0, -1, 0, 0, 0, 0}, D<S>{0, 0, 0, 1, S(0.5), 0, 0, 0}};
+    const std::array<S, 2> w2{-S(0), 1};
+    ops<S>().dq_blend(1, 2, pivot_test.front().data(), w2.data(), out.data(), &st);
+    EXPECT_EQ(st, RC_OK);
+    EXPECT_EQ(out[3], 1);
+  });
+}
+
+/// EDGE-3: a dot of exactly 0 between the real parts does not flip. r1 is a signed permutation
+/// of r0 (x, y, z, w) -> (-y, x, -w, z), so r0.r1 = 0 exactly and |r0| = |r1|; neither is unit
+/// in the format, so a flip decided on separately normalised copies would see +-tiny.
+TEST(Dq, BlendDoesNotFlipOnExactlyZeroDot) {
+  RC_CLAUSE("EDGE-3");
+  RC_CLAUSE("DQ-6");
+  both([](auto tag) {
+    using S = decltype(tag);
+    Rng rng;
+    for (int i = 0; i < 100; ++i) {
+      const Q<S> r0 = rng.quat<S>();
+      const Q<S> r1{-r0[1], r0[0], -r0[3], r0[2]};
+      const std::array<D<S>, 2> ds{D<S>{r0[0], r0[1], r0[2], r0[3], 0, 0, 0, 0}, D<S>{r1[0], r1[1], r1[2], r1[3], 0, 0, 0, 0}};
+      const std::array<S, 2> w{1, 1};
+      D<S> out;
+      std::uint8_t st = 9;
+      ops<S>().dq_blend(1, 2, ds.front().data(), w.data(), out.data(), &st);
+      ASSERT_EQ(st, RC_OK);
+      const auto a = rq(r0), b = rq(r1);
+      const ref::Quaternion<Real> no_flip{a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
+      EXPECT_LE((cl::METRIC_1_rotation_distance(rd(out).real, no_flip) / eps<S>()).toDouble(), strict("eps32"));
+    }
+  });
+}
+
+// ---- smoke check against the reference -------------------------------------------------------------
+
+TEST(Dq, SmokeAgainstReference) {
+  RC_CLAUSE("DQ-1");
+  RC_CLAUSE("DQ-2");
+  RC_CLAUSE("DQ-3");
+  RC_CLAUSE("DQ-5");
+  RC_CLAUSE("DQ-6");
+  RC_CLAUSE("AXIS-1");
+  RC_CLAUSE("COMPOSE-1");
+  RC_CLAUSE("APPLY-1");
+  both([](auto tag) {
+    using S = decltype(tag);
+    Rng rng;
+    std::uint8_t st;
+    for (int i = 0; i < 40; ++i) {
+      const Q<S> q = rng.quat<S>(), q2 = rng.quat<S>();
+      const V<S> t = rng.vec<S>(10), p = rng.vec<S>(10), c = rng.vec<S>(10), u = rng.vec<S>(1);
+      const S angle = S(rng.uniform(-7, 7)), tt = S(rng.uniform(-0.5, 1.5));
+      D<S> a, b, out;
+      ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), a.data(), &st);
+      EXPECT_LE(rigid_err(a, cl::DQ_1_from_rotation_translation(rq(q), rv(t)).value), strict("eps16"));
+      b = rng.rigid<S>();
+      ops<S>().dq_compose(1, a.data(), b.data(), out.data(), &st);
+      EXPECT_LE(rigid_err(out, cl::DQ_2_compose(rd(a), rd(b)).value), strict("eps16"));
+      EXPECT_LE(rigid_err(sclerp(a, b, tt), cl::DQ_5_sclerp(rd(a), rd(b), Real(tt)).value), strict("eps32"));
+      const std::array<D<S>, 3> ds{a, b, rng.rigid<S>()};
+      const std::array<S, 3> w{S(rng.uniform(0, 1)), S(rng.uniform(0, 1)), S(rng.uniform(0, 1))};
+      ops<S>().dq_blend(1, 3, ds.front().data(), w.data(), out.data(), &st);
+      const std::vector<ref::DualQuaternion<Real>> rds{rd(ds[0]), rd(ds[1]), rd(ds[2])};
+      const std::vector<Real> rw{Real(w[0]), Real(w[1]), Real(w[2])};
+      EXPECT_LE(rigid_err(out, cl::DQ_6_dlb<Real>(rds, rw).value), strict("eps32"));
+
+      V<S> moved;
+      ops<S>().dq_apply_point(1, a.data(), p.data(), moved.data(), &st);
+      EXPECT_LE(vec_err(moved, cl::DQ_3_apply_point(rd(a), rv(p)).value, std::max({Real(1), norm3(rv(p)), norm3(rv(t))})),
+                strict("eps16"));
+      const S angle_arr = angle;
+      ops<S>().rotate_about_axis(1, c.data(), u.data(), &angle_arr, p.data(), moved.data(), &st);
+      EXPECT_LE(vec_err(moved, axis_expected(rv(c), rv(u), Real(angle), rv(p)),
+                        std::max({Real(1), norm3(rv(p)), norm3(rv(c))})),
+                strict("eps16"));
+      ops<S>().apply_vector(1, q.data(), p.data(), moved.data(), &st);
+      EXPECT_LE(vec_err(moved, cl::APPLY_1_apply_vector(rq(q), rv(p)).value, norm3(rv(p))), strict("eps8"));
+      Q<S> prod;
+      ops<S>().compose(1, q.data(), q2.data(), prod.data(), &st);
+      // COMPOSE-1 defines the exact product of the inputs as given (QUAT-1), norm |a||b|.
+      const auto want = rq(q) * rq(q2), got = rq(prod);
+      const Real err = max(max(abs(got.w - want.w), abs(got.x - want.x)), max(abs(got.y - want.y), abs(got.z - want.z)));
+      EXPECT_LE((err / ref::norm(want) / eps<S>()).toDouble(), strict("eps8"));
+    }
+  });
+}
+
+TEST(Dq, SkinningSmokeAgainstReference) {
+  RC_CLAUSE("SKIN-1");
+  RC_CLAUSE("SKIN-2");
+  RC_CLAUSE("SKIN-3");
+  both([](auto tag) {
+    using S = decltype(tag);
+    Rng rng;
+    for (int i = 0; i < 40; ++i) {
+      const std::size_t k = 1 + i % 4;
+      std::vector<Q<S>> q;
+      std::vector<V<S>> t;
+      std::vector<S> w;
+      std::vector<ref::Quaternion<Real>> rqs;
+      std::vector<ref::Vec3<Real>> rts;
+      std::vector<Real> rws;
+      Real scale(1);
+      for (std::size_t j = 0; j < k; ++j) {
+        q.push_back(rng.quat<S>());
+        t.push_back(rng.vec<S>(10));
+        w.push_back(S(rng.uniform(0, 1)));
+        rqs.push_back(rq(q.back()));
+        rts.push_back(rv(t.back()));
+        rws.push_back(Real(w.back()));
+        scale = max(scale, norm3(rts.back()));
+      }
+      const V<S> v = rng.vec<S>(10);
+      scale = max(scale, norm3(rv(v)));
+      std::uint8_t st;
+      EXPECT_LE(vec_err(skin<S>(false, q, t, w, v, st), cl::SKIN_1_linear_blend<Real>(rqs, rts, rws, rv(v)).value, scale),
+                strict("eps64"));
+      EXPECT_LE(vec_err(skin<S>(true, q, t, w, v, st), cl::SKIN_2_dual_quaternion<Real>(rqs, rts, rws, rv(v)).value, scale),
+                strict("eps64"));
+    }
+  });
+}
+
+}  // namespace

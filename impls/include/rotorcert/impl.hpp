@@ -1,0 +1,233 @@
+// The C++ face of the implementation interface.
+//
+// A built-in implementation is a struct of static functions, one per operation it supports,
+// each working on ONE element with the ABI's array layouts (impl_abi.h):
+//
+//   struct GlmQuat {
+//     using Scalar = float;
+//     static rc::Status normalize(const rc::Quat<float>& q, rc::Quat<float>& out);
+//     static rc::Status slerp(const rc::Quat<float>& a, const rc::Quat<float>& b, const float& t,
+//                             rc::Quat<float>& out);
+//     static rc::Status blend_qlb(std::span<const rc::Quat<float>> q, std::span<const float> w,
+//                                 rc::Quat<float>& out);
+//     ...
+//   };
+//
+// Inputs are const references and come first, outputs are non-const references; scalars are
+// plain S. make_ops<Impl>() turns whatever subset is defined into the batched C table (a
+// missing function becomes a NULL pointer: NOT_SUPPORTED). An implementation that batches
+// itself (SIMD) defines `static int NAME_batch(...)` with the C signature instead, and that is
+// used as is.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "impl_abi.h"
+
+namespace rotorcert::impl {
+
+enum class Status : std::uint8_t { ok = RC_OK, domain_error = RC_DOMAIN_ERROR };
+
+template <class S> using Quat = std::array<S, 4>;      // [x, y, z, w]
+template <class S> using Vec3 = std::array<S, 3>;      // [x, y, z]; bivectors [e23, e31, e12]
+template <class S> using Mat3 = std::array<S, 9>;      // column-major
+template <class S> using DualQuat = std::array<S, 8>;  // [real xyzw, dual xyzw]
+
+template <class S> struct OpsFor;
+template <> struct OpsFor<float> { using type = rc_ops_f32; };
+template <> struct OpsFor<double> { using type = rc_ops_f64; };
+template <class S> using Ops = typename OpsFor<S>::type;
+
+namespace detail {
+
+// How one parameter of an element function maps to an ABI array.
+template <class P> struct Param;
+template <class S, std::size_t N> struct Param<const std::array<S, N>&> {
+  static constexpr bool output = false;
+  static constexpr std::size_t stride = N;
+  using value_type = std::array<S, N>;
+  using pointer = const S*;
+  static value_type load(pointer p, std::size_t i) {
+    value_type v;
+    for (std::size_t j = 0; j < N; ++j) v[j] = p[i * N + j];
+    return v;
+  }
+};
+template <class S, std::size_t N> struct Param<std::array<S, N>&> {
+  static constexpr bool output = true;
+  using value_type = std::array<S, N>;
+  using pointer = S*;
+  static value_type load(pointer, std::size_t) { return {}; }
+  static void store(pointer p, std::size_t i, const value_type& v) {
+    for (std::size_t j = 0; j < N; ++j) p[i * N + j] = v[j];
+  }
+  static void poison(value_type& v) { v.fill(std::numeric_limits<S>::quiet_NaN()); }
+};
+template <class S> requires std::is_floating_point_v<S> struct Param<const S&> {
+  static constexpr bool output = false;
+  using value_type = S;
+  using pointer = const S*;
+  static value_type load(pointer p, std::size_t i) { return p[i]; }
+};
+template <class S> requires std::is_floating_point_v<S> struct Param<S&> {
+  static constexpr bool output = true;
+  using value_type = S;
+  using pointer = S*;
+  static value_type load(pointer, std::size_t) { return S(0); }
+  static void store(pointer p, std::size_t i, const value_type& v) { p[i] = v; }
+  static void poison(value_type& v) { v = std::numeric_limits<S>::quiet_NaN(); }
+};
+
+template <auto Fn, class Signature> struct Elementwise;
+
+/// The batch loop around an element function: load element i of every input, call, store the
+/// outputs and the status. On DOMAIN_ERROR every output component is set to a quiet NaN, the
+/// one defined outcome of EDGE-6/7/9, so element functions need only return the status.
+template <auto Fn, class... P>
+struct Elementwise<Fn, Status (*)(P...)> {
+  static int run(std::size_t n, typename Param<P>::pointer... ptrs, std::uint8_t* status) {
+    for (std::size_t i = 0; i < n; ++i) {
+      std::tuple<typename Param<P>::value_type...> values{Param<P>::load(ptrs, i)...};
+      const Status s = std::apply(Fn, values);
+      finish(i, ptrs..., values, s, std::index_sequence_for<P...>{});
+      status[i] = static_cast<std::uint8_t>(s);
+    }
+    return 0;
+  }
+
+ private:
+  template <std::size_t... I>
+  static void finish(std::size_t i, typename Param<P>::pointer... ptrs,
+                     std::tuple<typename Param<P>::value_type...>& values, Status s, std::index_sequence<I...>) {
+    (store_one<P>(i, ptrs, std::get<I>(values), s), ...);
+  }
+  template <class Q>
+  static void store_one(std::size_t i, typename Param<Q>::pointer p, typename Param<Q>::value_type& v, Status s) {
+    if constexpr (Param<Q>::output) {
+      if (s == Status::domain_error) Param<Q>::poison(v);
+      Param<Q>::store(p, i, v);
+    }
+  }
+};
+
+/// n-way operations: element i has k influences. Influence arrays are copied into reused
+/// buffers and handed over as spans.
+template <class S, std::size_t A>
+void gather(const S* p, std::size_t i, std::size_t k, std::vector<std::array<S, A>>& out) {
+  out.resize(k);
+  for (std::size_t j = 0; j < k; ++j)
+    for (std::size_t c = 0; c < A; ++c) out[j][c] = p[(i * k + j) * A + c];
+}
+template <class S>
+void gather(const S* p, std::size_t i, std::size_t k, std::vector<S>& out) {
+  out.assign(p + i * k, p + i * k + k);
+}
+
+template <class S, std::size_t N>
+void store_poisonable(S* p, std::size_t i, std::array<S, N> v, Status s) {
+  if (s == Status::domain_error) v.fill(std::numeric_limits<S>::quiet_NaN());
+  for (std::size_t c = 0; c < N; ++c) p[i * N + c] = v[c];
+}
+
+/// Blend shape: (k influences of A scalars, k weights) -> one output of B scalars.
+template <auto Fn, class S, std::size_t A, std::size_t B>
+int blend(std::size_t n, std::size_t k, const S* x, const S* w, S* out, std::uint8_t* status) {
+  std::vector<std::array<S, A>> xs;
+  std::vector<S> ws;
+  for (std::size_t i = 0; i < n; ++i) {
+    gather(x, i, k, xs);
+    gather(w, i, k, ws);
+    std::array<S, B> r{};
+    const Status s = Fn(std::span<const std::array<S, A>>(xs), std::span<const S>(ws), r);
+    store_poisonable(out, i, r, s);
+    status[i] = static_cast<std::uint8_t>(s);
+  }
+  return 0;
+}
+
+/// Skinning shape: k influences (rotation, translation, weight) and one vertex per element.
+template <auto Fn, class S>
+int skin(std::size_t n, std::size_t k, const S* q, const S* t, const S* w, const S* v, S* out,
+         std::uint8_t* status) {
+  std::vector<Quat<S>> qs;
+  std::vector<Vec3<S>> ts;
+  std::vector<S> ws;
+  for (std::size_t i = 0; i < n; ++i) {
+    gather(q, i, k, qs);
+    gather(t, i, k, ts);
+    gather(w, i, k, ws);
+    const Vec3<S> vertex{v[i * 3], v[i * 3 + 1], v[i * 3 + 2]};
+    Vec3<S> r{};
+    const Status s = Fn(std::span<const Quat<S>>(qs), std::span<const Vec3<S>>(ts), std::span<const S>(ws), vertex, r);
+    store_poisonable(out, i, r, s);
+    status[i] = static_cast<std::uint8_t>(s);
+  }
+  return 0;
+}
+
+}  // namespace detail
+
+// Each ROTORCERT_OP_* picks, for one table slot, the implementation's batch function if it has
+// one, else the element function wrapped in the batch loop, else NULL.
+#define ROTORCERT_OP_ELEMENTWISE(ops, Impl, name)                                               \
+  if constexpr (requires { &Impl::name##_batch; }) {                                            \
+    ops.name = &Impl::name##_batch;                                                              \
+  } else if constexpr (requires { &Impl::name; }) {                                              \
+    ops.name = &::rotorcert::impl::detail::Elementwise<&Impl::name, decltype(&Impl::name)>::run; \
+  }
+#define ROTORCERT_OP_BLEND(ops, Impl, name, S, A, B)                          \
+  if constexpr (requires { &Impl::name##_batch; }) {                          \
+    ops.name = &Impl::name##_batch;                                            \
+  } else if constexpr (requires { &Impl::name; }) {                            \
+    ops.name = &::rotorcert::impl::detail::blend<&Impl::name, S, A, B>;        \
+  }
+#define ROTORCERT_OP_SKIN(ops, Impl, name, S)                                 \
+  if constexpr (requires { &Impl::name##_batch; }) {                          \
+    ops.name = &Impl::name##_batch;                                            \
+  } else if constexpr (requires { &Impl::name; }) {                            \
+    ops.name = &::rotorcert::impl::detail::skin<&Impl::name, S>;               \
+  }
+
+/// The batched C table of an implementation struct.
+template <class Impl>
+Ops<typename Impl::Scalar> make_ops() {
+  using S = typename Impl::Scalar;
+  Ops<S> ops{};
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, normalize)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, compose)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, inverse)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, apply_vector)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, apply_bivector)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, apply_trivector)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_matrix)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, from_matrix)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_axis_angle)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, from_axis_angle)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, log)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, exp)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, slerp)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, nlerp)
+  ROTORCERT_OP_BLEND(ops, Impl, blend_qlb, S, 4, 4)
+  ROTORCERT_OP_BLEND(ops, Impl, blend_log, S, 4, 4)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_from_rotation_translation)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_compose)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_apply_point)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_normalize)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_sclerp)
+  ROTORCERT_OP_BLEND(ops, Impl, dq_blend, S, 8, 8)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rotate_about_axis)
+  ROTORCERT_OP_SKIN(ops, Impl, skin_linear, S)
+  ROTORCERT_OP_SKIN(ops, Impl, skin_dual_quaternion, S)
+  return ops;
+}
+
+}  // namespace rotorcert::impl

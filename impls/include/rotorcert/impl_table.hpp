@@ -1,0 +1,72 @@
+// Building an implementation's rc_impl tables and its entry point from C++ structs.
+//
+// An implementation struct provides, besides its operations (impl.hpp):
+//   using Scalar = float | double;
+//   static constexpr const char* name, version, description;
+//   static constexpr std::uint32_t levels;          // RC_LEVEL_* bits
+//   static constexpr const char* const clauses[];   // NULL-terminated
+// and optionally the SIMD dispatch hooks simd_targets / select_target / current_target.
+#pragma once
+
+#include <cstdint>
+
+#include "impl.hpp"
+
+namespace rotorcert::impl {
+
+template <class Impl>
+const rc_impl* table() {
+  using S = typename Impl::Scalar;
+  static const Ops<S> ops = make_ops<Impl>();
+  static const rc_impl t = [] {
+    rc_impl r{};
+    r.abi_version = RC_ABI_VERSION;
+    r.name = Impl::name;
+    r.version = Impl::version;
+    r.description = Impl::description;
+    r.levels = Impl::levels;
+    r.clauses = Impl::clauses;
+    if constexpr (std::is_same_v<S, float>) {
+      r.scalar = RC_SCALAR_FLOAT32;
+      r.f32 = &ops;
+    } else {
+      r.scalar = RC_SCALAR_FLOAT64;
+      r.f64 = &ops;
+    }
+    if constexpr (requires { Impl::simd_targets; }) {
+      r.simd_targets = Impl::simd_targets;
+      r.select_target = &Impl::select_target;
+      r.current_target = &Impl::current_target;
+    }
+    return r;
+  }();
+  return &t;
+}
+
+/// The body of an entry point: the index-th of the given implementation structs.
+template <class... Impls>
+const rc_impl* entry(std::uint32_t abi_version, std::uint32_t index) {
+  if (abi_version != RC_ABI_VERSION) return nullptr;
+  const rc_impl* tables[] = {table<Impls>()...};
+  return index < sizeof...(Impls) ? tables[index] : nullptr;
+}
+
+}  // namespace rotorcert::impl
+
+/// Defines the implementation's static entry point rotorcert_impl_entry_<id>; the plugin
+/// build of the same file (ROTORCERT_PLUGIN defined) also exports rotorcert_impl_entry.
+#ifdef ROTORCERT_PLUGIN
+#define ROTORCERT_DEFINE_ENTRY(id, ...)                                                            \
+  extern "C" const rc_impl* rotorcert_impl_entry_##id(std::uint32_t abi, std::uint32_t index) {  \
+    return ::rotorcert::impl::entry<__VA_ARGS__>(abi, index);                                     \
+  }                                                                                                \
+  extern "C" __attribute__((visibility("default"))) const rc_impl* rotorcert_impl_entry(          \
+      std::uint32_t abi, std::uint32_t index) {                                                    \
+    return rotorcert_impl_entry_##id(abi, index);                                                  \
+  }
+#else
+#define ROTORCERT_DEFINE_ENTRY(id, ...)                                                            \
+  extern "C" const rc_impl* rotorcert_impl_entry_##id(std::uint32_t abi, std::uint32_t index) {  \
+    return ::rotorcert::impl::entry<__VA_ARGS__>(abi, index);                                     \
+  }
+#endif

@@ -1,0 +1,200 @@
+// motor_pga: PGA Cl(3,0,1) motors as a drop-in for dual quaternions (the future work of
+// Papagiannakis 2013). The runtime math is motor.hpp (layout and MOTOR-1 map documented there);
+// this file is the ABI face.
+//
+// The ABI speaks dual quaternions [real xyzw, dual xyzw]; every operation converts with MOTOR-1
+// at the boundary (exact: coefficients are only moved and negated), works on motors, and
+// converts back. The conversion is part of what is measured.
+//
+// Defined outcomes (EDGE-5 .. EDGE-9): a non-finite component anywhere, a zero rotor part or a
+// zero rotation, a zero axis, or bad weights give DOMAIN_ERROR (the adaptor writes the NaNs).
+// A non-unit input motor stands for its normalisation M (M ~M)^(-1/2) (= DQ-4).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/impl_table.hpp>
+
+#include "motor.hpp"
+
+namespace {
+
+namespace rci = rotorcert::impl;
+namespace runtime = rotorcert::runtime;
+namespace pga = rotorcert::motor_pga;
+using rci::Status;
+using pga::Motor;
+using pga::V3;
+
+template <class S> bool finite(S x) { return std::isfinite(x); }
+template <class S, std::size_t N> bool finite(const std::array<S, N>& a) {
+  return std::all_of(a.begin(), a.end(), [](S x) { return finite(x); });
+}
+template <class S> bool valid_rotation(const rci::Quat<S>& q) {
+  return finite(q) && (q[0] != 0 || q[1] != 0 || q[2] != 0 || q[3] != 0);
+}
+/// A usable dual quaternion: finite, real part (the rotor part of the motor) nonzero.
+template <class S> bool valid_dq(const rci::DualQuat<S>& d) {
+  return finite(d) && (d[0] != 0 || d[1] != 0 || d[2] != 0 || d[3] != 0);
+}
+
+/// EDGE-9: the largest weight, or 0 if the set is empty, a weight is NaN/Inf/negative, or all
+/// are zero (-0 counts as 0).
+template <class S> S largest_weight(std::span<const S> w) {
+  S largest = 0;
+  for (S x : w) {
+    if (!finite(x) || x < 0) return 0;
+    largest = std::max(largest, x);
+  }
+  return largest;
+}
+
+
+/// <A ~B>_0 of the rotor parts for the hemisphere rules (EDGE-3), from the inputs as given, each
+/// scaled by an exact power of two: normalised copies would turn an exact 0 (no flip) into
+/// +-tiny, and raw products could overflow.
+template <class S> int hemisphere_dot(const Motor<S>& a, const Motor<S>& b) {
+  return runtime::hemisphere_sign<S>({a.s, a.e23, a.e31, a.e12}, {b.s, b.e23, b.e31, b.e12});
+}
+
+/// The unit motor of a dual quaternion (MOTOR-1, then normalisation).
+template <class S> Motor<S> unit_motor(const rci::DualQuat<S>& d) {
+  return pga::normalized(pga::from_dual_quaternion(d));
+}
+
+/// The rotor of the rotation q/|q|: q divided by the largest |component| (exact power of two)
+/// and by its norm, then Q2R-1.
+template <class S> Motor<S> unit_rotor(const rci::Quat<S>& q) {
+  using std::abs;
+  const int e = -std::ilogb(std::max({abs(q[0]), abs(q[1]), abs(q[2]), abs(q[3])}));
+  const S x = std::scalbn(q[0], e), y = std::scalbn(q[1], e), z = std::scalbn(q[2], e), w = std::scalbn(q[3], e);
+  const S n = std::sqrt(x * x + y * y + z * z + w * w);
+  return pga::rotor(x / n, y / n, z / n, w / n);
+}
+
+/// DQ-1 as a motor: M = T(t) R (rotate, then translate).
+template <class S> Motor<S> rigid(const rci::Quat<S>& q, const rci::Vec3<S>& t) {
+  return pga::translator(V3<S>{t[0], t[1], t[2]}) * unit_rotor(q);
+}
+
+template <class S> rci::Vec3<S> move_point(const Motor<S>& unit, const rci::Vec3<S>& p) {
+  const pga::Point<S> moved = pga::sandwich(unit, pga::Point<S>{p[0], p[1], p[2], S(1)});
+  return {moved.e032, moved.e013, moved.e021};
+}
+
+/// MOTOR-5 on validated input: normalise(sum (w_i / w_max) s_i M_i) over the unit influences,
+/// s_i = -1 iff <M_i ~M_p>_0 < 0 against the pivot p (first weight > 0), decided on the motors
+/// as given (`raw(i)`). Equals DLB (DQ-6) under MOTOR-1.
+template <class S, class Raw, class Unit>
+Motor<S> blend(std::size_t k, Raw raw, Unit unit_influence, std::span<const S> w, S w_max) {
+  std::size_t p = 0;
+  while (!(w[p] > 0)) ++p;
+  const Motor<S> pivot = raw(p);
+  Motor<S> sum{0, 0, 0, 0, 0, 0, 0, 0};
+  for (std::size_t i = 0; i < k; ++i) {
+    const Motor<S> m = unit_influence(i);
+    const S f = hemisphere_dot(raw(i), pivot) < 0 ? -(w[i] / w_max) : w[i] / w_max;
+    sum = {sum.s + f * m.s,     sum.e23 + f * m.e23, sum.e31 + f * m.e31, sum.e12 + f * m.e12,
+           sum.e01 + f * m.e01, sum.e02 + f * m.e02, sum.e03 + f * m.e03, sum.e0123 + f * m.e0123};
+  }
+  return pga::normalized(sum);
+}
+
+template <class S>
+struct MotorPga {
+  using Scalar = S;
+  static constexpr const char* name = "motor_pga";
+  static constexpr const char* version = "0.1.0";
+  static constexpr const char* description =
+      "PGA Cl(3,0,1) motors (hand-expanded products, closed-form exp/log) behind the dual-quaternion ABI";
+  static constexpr std::uint32_t levels = RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
+  static constexpr const char* const clauses[] = {
+      "DQ-1",   "DQ-2",   "DQ-3",   "DQ-4",   "DQ-5",   "DQ-6",   "AXIS-1",                      // Rigid
+      "SKIN-2", "SKIN-3",                                                                        // Skinning
+      "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-9",  // Robust (EDGE-8: no quaternion ops)
+      nullptr};
+
+  static Status dq_from_rotation_translation(const rci::Quat<S>& q, const rci::Vec3<S>& t, rci::DualQuat<S>& out) {
+    if (!valid_rotation(q) || !finite(t)) return Status::domain_error;
+    out = pga::to_dual_quaternion(rigid(q, t));
+    return Status::ok;
+  }
+
+  /// MOTOR-3: the geometric product of the unit motors (apply b first).
+  static Status dq_compose(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, rci::DualQuat<S>& out) {
+    if (!valid_dq(a) || !valid_dq(b)) return Status::domain_error;
+    out = pga::to_dual_quaternion(unit_motor(a) * unit_motor(b));
+    return Status::ok;
+  }
+
+  /// MOTOR-2: the sandwich M P ~M of the unit motor.
+  static Status dq_apply_point(const rci::DualQuat<S>& d, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
+    if (!valid_dq(d) || !finite(p)) return Status::domain_error;
+    out = move_point(unit_motor(d), p);
+    return Status::ok;
+  }
+
+  static Status dq_normalize(const rci::DualQuat<S>& d, rci::DualQuat<S>& out) {
+    if (!valid_dq(d)) return Status::domain_error;
+    out = pga::to_dual_quaternion(unit_motor(d));
+    return Status::ok;
+  }
+
+  /// DQ-5 through MOTOR-4: exp(t log(M_B ~M_A)) M_A on the shorter arc.
+  static Status dq_sclerp(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, const S& t, rci::DualQuat<S>& out) {
+    if (!valid_dq(a) || !valid_dq(b) || !finite(t)) return Status::domain_error;
+    const Motor<S> ma = unit_motor(a), mb = unit_motor(b);
+    const bool flip = hemisphere_dot(pga::from_dual_quaternion(b), pga::from_dual_quaternion(a)) < 0;
+    out = pga::to_dual_quaternion(pga::interpolate_aligned(ma, flip ? -mb : mb, t));
+    return Status::ok;
+  }
+
+  static Status dq_blend(std::span<const rci::DualQuat<S>> d, std::span<const S> w, rci::DualQuat<S>& out) {
+    if (d.empty() || d.size() != w.size()) return Status::domain_error;
+    for (const auto& x : d)
+      if (!valid_dq(x)) return Status::domain_error;
+    const S w_max = largest_weight(w);
+    if (!(w_max > 0)) return Status::domain_error;
+    out = pga::to_dual_quaternion(blend<S>(
+        d.size(), [&](std::size_t i) { return pga::from_dual_quaternion(d[i]); },
+        [&](std::size_t i) { return unit_motor(d[i]); }, w, w_max));
+    return Status::ok;
+  }
+
+  /// AXIS-1: the motor T_c R ~T_c, R = cos(angle/2) - sin(angle/2) (u1 e23 + u2 e31 + u3 e12)
+  /// for the unit direction u, applied to the point.
+  static Status rotate_about_axis(const rci::Vec3<S>& c, const rci::Vec3<S>& u, const S& angle, const rci::Vec3<S>& p,
+                                  rci::Vec3<S>& out) {
+    if (!finite(c) || !finite(u) || !finite(angle) || !finite(p)) return Status::domain_error;
+    if (u[0] == 0 && u[1] == 0 && u[2] == 0) return Status::domain_error;
+    const S sn = std::sin(angle / 2), cs = std::cos(angle / 2);
+    // The rotor of the quaternion (cos, sin u/|u|): unit_rotor normalises the direction safely.
+    const Motor<S> axis = unit_rotor(rci::Quat<S>{u[0], u[1], u[2], S(0)});  // (0, -u/|u|)
+    const Motor<S> r{cs, sn * axis.e23, sn * axis.e31, sn * axis.e12, 0, 0, 0, 0};
+    const Motor<S> tc = pga::translator(V3<S>{c[0], c[1], c[2]});
+    out = move_point(tc * r * pga::reverse(tc), p);
+    return Status::ok;
+  }
+
+  /// SKIN-2: M_i = T(t_i) R_i (unit by construction), blended (MOTOR-5), sandwich of v.
+  static Status skin_dual_quaternion(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t,
+                                     std::span<const S> w, const rci::Vec3<S>& v, rci::Vec3<S>& out) {
+    if (q.empty() || q.size() != t.size() || q.size() != w.size() || !finite(v)) return Status::domain_error;
+    for (std::size_t i = 0; i < q.size(); ++i)
+      if (!valid_rotation(q[i]) || !finite(t[i])) return Status::domain_error;
+    const S w_max = largest_weight(w);
+    if (!(w_max > 0)) return Status::domain_error;
+    // The hemisphere test on the rotations as given: rotor_dot of rotors = dot of quaternions.
+    const auto raw = [&](std::size_t i) { return pga::rotor(q[i][0], q[i][1], q[i][2], q[i][3]); };
+    out = move_point(blend<S>(q.size(), raw, [&](std::size_t i) { return rigid(q[i], t[i]); }, w, w_max), v);
+    return Status::ok;
+  }
+};
+
+}  // namespace
+
+ROTORCERT_DEFINE_ENTRY(motor_pga, MotorPga<float>, MotorPga<double>)

@@ -1,0 +1,73 @@
+// rotor_m1: the paper's Method 1 (Table 1, Appendix A): quaternion -> angle and axis -> rotor
+// R = exp(-I u theta/2) (eq. 5), then every operation in Cl(3,0) (impls/rotor/rotor3.hpp) and
+// the quaternion read back by Phi^-1 (Q2R-1). Trigonometry on the way in is the cost this
+// implementation measures against rotor_m2; the angle unit is radians (ERRATUM-5 corrected).
+#include <cmath>
+#include <numbers>
+
+#include <rotorcert/impl_table.hpp>
+
+#include "../rotor/rotor3.hpp"
+
+namespace {
+
+using rotorcert::impl::Quat;
+using rotorcert::rotor::Rotor3;
+
+struct Method1 : rotorcert::rotor::PhiReadout {
+  /// theta/2 = atan2(|v|, w), u = v/|v| (AXANG-1, scale-free: q need not be unit), then
+  /// exp(-I u theta/2) = cos(theta/2) - I u sin(theta/2). Computed on q rescaled by a power of
+  /// two so that subnormal or huge components keep full accuracy. v = 0 gives +-1 exactly
+  /// (exp(0) = 1; the angle 2 pi for w < 0), w = 0 the exact half turn (cos(pi/2) rounded is
+  /// not 0: in binary32 it is -4.4e-8, which would move the hemisphere test of a tie).
+  template <class S>
+  static Rotor3<S> in(const Quat<S>& q) {
+    const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
+    const int e = rotorcert::rotor::scale_exponent(m);
+    const S x = std::scalbn(q[0], -e), y = std::scalbn(q[1], -e), z = std::scalbn(q[2], -e), w = std::scalbn(q[3], -e);
+    const S n = std::sqrt(x * x + y * y + z * z);
+    if (n == 0) return {w > 0 ? S(1) : S(-1), S(0), S(0), S(0)};
+    S c = 0, s = 1;
+    if (w != 0) {
+      const S half = std::atan2(n, w);
+      c = std::cos(half);
+      s = std::sin(half);
+    }
+    const S k = s / n;
+    return {c, -k * x, -k * y, -k * z};
+  }
+  /// |q| R (COMPOSE-1 and INV-1 keep the scale of their inputs).
+  template <class S>
+  static Rotor3<S> in_scaled(const Quat<S>& q) {
+    const Rotor3<S> r = in(q);
+    const S n = rotorcert::rotor::norm4(q);
+    return {n * r.s, n * r.e23, n * r.e31, n * r.e12};
+  }
+};
+
+constexpr const char* kClauses[] = {
+    // Core
+    "QUAT-2", "AXANG-1", "AXANG-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "APPLY-3", "MAT-1", "MAT-2",
+    // Interp
+    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
+    // Blend
+    "QLB-1", "LOGBLEND-1",
+    // Skinning (linear blend skinning only)
+    "SKIN-1",
+    // Robust
+    "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9", nullptr};
+
+template <class S>
+struct RotorM1 : rotorcert::rotor::RotorOps<S, Method1> {
+  static constexpr const char* name = "rotor_m1";
+  static constexpr const char* version = "1";
+  static constexpr const char* description =
+      "GA rotors, paper's Method 1: quaternion -> angle/axis -> exp(-I u theta/2), ops in Cl(3,0)";
+  static constexpr std::uint32_t levels =
+      RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
+  static constexpr const char* const* clauses = kClauses;
+};
+
+}  // namespace
+
+ROTORCERT_DEFINE_ENTRY(rotor_m1, RotorM1<float>, RotorM1<double>)
