@@ -119,18 +119,18 @@ std::vector<AbiOp> build() {
          const auto qs = quats(in[0], k);
          return one(clause::LOGBLEND_1_blend(std::span<const Quat>(qs), std::span<const Real>(in[1])));
        }, {}});
-  add({"dq_from_rotation_translation", {q, Array{"t", 3}}, {out("out_d", 8, Measure::rigid)}, false,
+  add({"dq_from_rotation_translation", {q, Array{"t", 3}}, {out("out_d", 8, Measure::unit_rigid)}, false,
        [](const Values& in, std::size_t) { return one(clause::DQ_1_from_rotation_translation(quat(in[0]), vec3(in[1]))); }, {}});
   add({"dq_compose", {da, db}, {out("out_d", 8, Measure::rigid)}, false,
        [](const Values& in, std::size_t) { return one(clause::DQ_2_compose(dq(in[0]), dq(in[1]))); }, {}});
   add({"dq_apply_point", {d, Array{"p", 3}}, {out("out_p", 3, Measure::point)}, false,
        [](const Values& in, std::size_t) { return one(clause::DQ_3_apply_point(dq(in[0]), vec3(in[1]))); },
        [](const Values& in, std::size_t) { return rigid_scale(dq(in[0]), vec3(in[1])); }});
-  add({"dq_normalize", {d}, {out("out_d", 8, Measure::rigid)}, false,
+  add({"dq_normalize", {d}, {out("out_d", 8, Measure::unit_rigid)}, false,
        [](const Values& in, std::size_t) { return one(clause::DQ_4_normalize(dq(in[0]))); }, {}});
-  add({"dq_sclerp", {da, db, t}, {out("out_d", 8, Measure::rigid)}, false,
+  add({"dq_sclerp", {da, db, t}, {out("out_d", 8, Measure::unit_rigid)}, false,
        [](const Values& in, std::size_t) { return one(clause::DQ_5_sclerp(dq(in[0]), dq(in[1]), in[2][0])); }, {}});
-  add({"dq_blend", {influences("d", 8), influences("w", 1)}, {out("out_d", 8, Measure::rigid)}, true,
+  add({"dq_blend", {influences("d", 8), influences("w", 1)}, {out("out_d", 8, Measure::unit_rigid)}, true,
        [](const Values& in, std::size_t k) {
          const auto ds = dqs(in[0], k);
          return one(clause::DQ_6_dlb(std::span<const DQ>(ds), std::span<const Real>(in[1])));

@@ -111,6 +111,13 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
       const auto e = clause::METRIC_7_rigid_error(dq(got), dq(want));
       return max(e.rotation, e.translation);
     }
+    case Measure::unit_rigid: {
+      const auto e = clause::METRIC_7_rigid_error(dq(got), dq(want));
+      const auto g = dq(got);
+      const auto t = clause::dual_quaternion_translation(dq(want));
+      const Real orthogonality = abs(ref::dot(g.real, g.dual)) / max(Real(1), sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]));
+      return max(max(e.rotation, e.translation), max(clause::METRIC_6_norm_defect(g.real), orthogonality));
+    }
   }
   return ref::ScalarTraits<Real>::nan();
 }

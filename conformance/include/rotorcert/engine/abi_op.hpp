@@ -28,6 +28,8 @@ enum class Measure {
   angle,          // absolute radians
   scalar,         // relative, absolute at 0
   rigid,          // dual quaternion: METRIC-7, rotation and translation
+  unit_rigid,     // dual quaternion that must be unit (DQ-4): METRIC-7, METRIC-6 of the real part,
+                  // and the orthogonality defect |r.d| / max(1, |t_ref|)
 };
 
 struct Array {
