@@ -1,0 +1,66 @@
+// `rotorcert list`: every built-in implementation appears with its scalar type and levels, the
+// SIMD implementation with its dispatch targets, and a plugin path that does not load is a usage
+// error (exit 2) with a message, not a crash.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <rotorcert/registry.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+  int exit_code;
+  std::string output;
+};
+
+ToolRun rotorcert(const std::string& args) {
+  const fs::path out = fs::temp_directory_path() / ("rotorcert_list_" + std::to_string(::getpid()) + ".txt");
+  const std::string command = std::string("'") + ROTORCERT_BINARY + "' " + args + " > '" + out.string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(out);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(out);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+TEST(CliList, ShowsEveryBuiltinWithScalarLevelsAndSimdTargets) {
+  const ToolRun r = rotorcert("list");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const rc_impl* t : rotorcert::impl::builtin_tables()) {
+    const std::string scalar = t->scalar == RC_SCALAR_FLOAT32 ? "float" : "double";
+    bool found = false;
+    std::istringstream lines(r.output);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind(std::string(t->name) + " ", 0) == 0 && line.find(" " + scalar + " ") != std::string::npos) {
+        found = true;
+        if (t->simd_targets) {
+          for (int i = 0; t->simd_targets[i]; ++i) EXPECT_NE(line.find(t->simd_targets[i]), std::string::npos) << line;
+        }
+      }
+    EXPECT_TRUE(found) << t->name << " (" << scalar << ") is missing from\n" << r.output;
+  }
+  EXPECT_NE(r.output.find("Core,Interp,Blend"), std::string::npos) << r.output;
+}
+
+TEST(CliList, AddsAPluginAndRejectsOneThatDoesNotLoad) {
+  const fs::path plugin = fs::path(ROTORCERT_PLUGIN_DIR) / "rotorcert_impl_dq.so";
+  const ToolRun ok = rotorcert("list --plugin '" + plugin.string() + "'");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_NE(ok.output.find("plugin"), std::string::npos) << ok.output;
+  const ToolRun bad = rotorcert("list --plugin /nonexistent/plugin.so");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("cannot load plugin /nonexistent/plugin.so"), std::string::npos) << bad.output;
+}
+
+}  // namespace
