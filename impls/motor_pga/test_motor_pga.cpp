@@ -93,7 +93,7 @@ Real norm3(const ref::Vec3<Real>& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v
 ref::Vec3<Real> sub3(const ref::Vec3<Real>& a, const ref::Vec3<Real>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 /// AXIS-1 by its definition, R(p - c) + c with R the rotation by `angle` about u/|u| (APPLY-1 of
-/// the reference). Not the reference's AXIS_1 function: that one is being reworked (reported).
+/// the reference): an independent route to AXIS-1's answer, not the reference's AXIS_1 function.
 ref::Vec3<Real> axis_expected(const ref::Vec3<Real>& c, const ref::Vec3<Real>& u, const Real& angle,
                               const ref::Vec3<Real>& p) {
   const Real n = norm3(u), h = angle / 2;
