@@ -16,6 +16,7 @@
 #include <rotorcert/reference/metrics.hpp>
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
+#include <rotorcert/testing/abi_values.hpp>
 #include <rotorcert/testing/clause.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
@@ -27,9 +28,7 @@ namespace ref = rotorcert::ref;
 namespace cl = rotorcert::ref::clause;
 using ref::Real;
 using rotorcert::testing::eps_class_bars;
-template <class S> using Q = rotorcert::impl::Quat<S>;
-template <class S> using V = rotorcert::impl::Vec3<S>;
-template <class S> using D = rotorcert::impl::DualQuat<S>;
+using namespace rotorcert::testing::abi;
 
 // ---- the tables and single-element calls ----------------------------------------------------------
 
@@ -38,7 +37,6 @@ template <class S> const rotorcert::impl::Ops<S>& ops() {
   else return *rotorcert_impl_entry_dq(RC_ABI_VERSION, 1)->f64;
 }
 
-template <class S> Real eps() { return ref::format_epsilon<Real>(std::is_same_v<S, float> ? ref::Format::binary32 : ref::Format::binary64); }
 double strict(const char* cls) { return eps_class_bars(cls).strict; }
 
 template <class S> D<S> normalize_dq(const D<S>& d, std::uint8_t& st) {
@@ -61,35 +59,7 @@ template <class S> V<S> skin(bool dual, const std::vector<Q<S>>& q, const std::v
   return out;
 }
 
-// ---- conversions to the reference's types (exact) ----------------------------------------------
-
-template <class S> ref::Quaternion<Real> rq(const Q<S>& q) { return {Real(q[3]), Real(q[0]), Real(q[1]), Real(q[2])}; }
-template <class S> ref::DualQuaternion<Real> rd(const D<S>& d) {
-  return {{Real(d[3]), Real(d[0]), Real(d[1]), Real(d[2])}, {Real(d[7]), Real(d[4]), Real(d[5]), Real(d[6])}};
-}
-template <class S> ref::Vec3<Real> rv(const V<S>& v) { return {Real(v[0]), Real(v[1]), Real(v[2])}; }
-Real norm3(const ref::Vec3<Real>& v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-ref::Vec3<Real> sub3(const ref::Vec3<Real>& a, const ref::Vec3<Real>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-
-/// AXIS-1 by its definition, R(p - c) + c with R the rotation by `angle` about u/|u| (APPLY-1 of
-/// the reference): an independent route to AXIS-1's answer, not the reference's AXIS_1 function.
-ref::Vec3<Real> axis_expected(const ref::Vec3<Real>& c, const ref::Vec3<Real>& u, const Real& angle,
-                              const ref::Vec3<Real>& p) {
-  const Real n = norm3(u), h = angle / 2;
-  const ref::Quaternion<Real> q{cos(h), sin(h) * u[0] / n, sin(h) * u[1] / n, sin(h) * u[2] / n};
-  const ref::Vec3<Real> r = cl::APPLY_1_apply_vector(q, sub3(p, c)).value;
-  return {r[0] + c[0], r[1] + c[1], r[2] + c[2]};
-}
-
-/// METRIC-7 in eps units.
-template <class S> double rigid_err(const D<S>& got, const ref::DualQuaternion<Real>& want) {
-  const auto e = cl::METRIC_7_rigid_error(rd(got), want);
-  return (max(e.rotation, e.translation) / eps<S>()).toDouble();
-}
-/// METRIC-3 with a clause's scale, in eps units.
-template <class S> double vec_err(const V<S>& got, const ref::Vec3<Real>& want, const Real& scale) {
-  return (norm3(sub3(rv(got), want)) / scale / eps<S>()).toDouble();
-}
+// Conversions to the reference's types and errors in eps units: rotorcert/testing/abi_values.hpp.
 
 // ---- random inputs (fixed seed: reproducible) --------------------------------------------------------
 
