@@ -80,9 +80,9 @@ std::vector<AbiOp> build() {
 
   add({"normalize", {q}, {out("out_q", 4, Measure::unit_rotation)}, false,
        [](const Values& in, std::size_t) { return one(clause::NORM_1_normalize(quat(in[0]))); }, {}});
-  add({"compose", {a, b}, {out("out_q", 4, Measure::rotation)}, false,
+  add({"compose", {a, b}, {out("out_q", 4, Measure::quaternion)}, false,
        [](const Values& in, std::size_t) { return one(clause::COMPOSE_1_compose(quat(in[0]), quat(in[1]))); }, {}});
-  add({"inverse", {q}, {out("out_q", 4, Measure::rotation)}, false,
+  add({"inverse", {q}, {out("out_q", 4, Measure::quaternion)}, false,
        [](const Values& in, std::size_t) { return one(clause::INV_1_inverse(quat(in[0]))); }, {}});
   add({"apply_vector", {q, v}, {out("out_v", 3, Measure::vector)}, false,
        [](const Values& in, std::size_t) { return one(clause::APPLY_1_apply_vector(quat(in[0]), vec3(in[1]))); }, {}});

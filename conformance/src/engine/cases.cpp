@@ -486,6 +486,25 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
   } else {
     // The operation's own clause: ordinary random inputs, obtuse pairs included by construction.
     repeat([&](int) { return random(); });
+    if (clause == "QLB-1" || clause == "LOGBLEND-1" || clause == "DQ-6") {
+      // The pivot is the first influence with a positive weight, not the first influence: a zero
+      // first weight, and a third influence on whose hemisphere the two candidate pivots disagree.
+      repeat([&](int) {
+        for (;;) {
+          Case c = random(3);
+          const int stride = op == "dq_blend" ? 8 : 4;
+          auto real = [&](std::size_t j) {
+            const auto& v = c.inputs[0];
+            return Quat{v[j * stride + 3], v[j * stride], v[j * stride + 1], v[j * stride + 2]};
+          };
+          const int s01 = ref::hemisphere_sign(real(1), real(0)), s02 = ref::hemisphere_sign(real(2), real(0));
+          const int s12 = ref::hemisphere_sign(real(2), real(1));
+          if (s01 * s02 == s12 || s01 == 0 || s02 == 0 || s12 == 0) continue;
+          c.inputs[1][0] = Real(0);
+          return labelled(c, "first weight 0: pivot is the second influence");
+        }
+      });
+    }
   }
 }
 

@@ -90,6 +90,13 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
   using std::max;
   switch (m) {
     case Measure::rotation: return clause::METRIC_1_rotation_distance(quat(got), quat(want));
+    case Measure::quaternion: {
+      Real worst(0);
+      for (int i = 0; i < 4; ++i) worst = max(worst, Real(abs(got[i] - want[i])));
+      const Real relative = worst / norm(want);
+      if (mpfr::isnan(relative)) return relative;
+      return max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), relative);
+    }
     case Measure::unit_rotation:
       return max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got)));
     case Measure::vector:

@@ -20,6 +20,8 @@ using ref::Real;
 /// How an output array is compared with the reference (SPEC section 3).
 enum class Measure {
   rotation,       // quaternion: METRIC-1 radians (sign-free)
+  quaternion,     // quaternion defined on unnormalised input (COMPOSE-1, INV-1): METRIC-1 and the
+                  // componentwise relative error max_i |q_i - r_i| / |r| (scale and sign count)
   unit_rotation,  // quaternion that must be unit: METRIC-1 and METRIC-6
   vector,         // METRIC-3, relative to |reference|
   point,          // |p - p_ref| / max(1, |inputs|): rigid operations (DQ-3, AXIS-1, SKIN-*)
