@@ -36,6 +36,7 @@
 #include <vector>
 
 #include <rotorcert/impl_table.hpp>
+#include <rotorcert/runtime/exact_sign.hpp>
 
 namespace rotorcert::rotor_simd {
 
@@ -60,33 +61,12 @@ struct Kernels {
   Blend blend_log;
 };
 
-/// Sign (-1, 0, +1) of the exact dot product of two float quaternions. Each product of two
-/// floats is exact in double (24 + 24 bits; no overflow or underflow: 2^-298 .. 2^256); the
-/// four are summed exactly as a nonoverlapping expansion (Shewchuk's Grow-Expansion with zero
-/// elimination), whose sign is that of its largest nonzero component. The hemisphere rules
-/// (SLERP-1, QLB-1, EDGE-3) flip iff the dot is < 0 strictly, and a float dot (with or without
-/// FMA) can turn an exact 0 into +-tiny; the kernels call this only when their float dot is
-/// within its error bound of zero.
+/// Sign (-1, 0, +1) of the exact dot product of two float quaternions ([x, y, z, w] arrays):
+/// the hemisphere rules (SLERP-1, QLB-1, EDGE-3) flip iff it is < 0 strictly, and a float dot
+/// can turn an exact 0 into +-tiny. The kernels call this only when their float dot is within
+/// its error bound of zero.
 inline int exact_dot_sign(const float* a, const float* b) {
-  double e[8];
-  int n = 0;
-  for (int i = 0; i < 4; ++i) {
-    double q = static_cast<double>(a[i]) * static_cast<double>(b[i]);
-    int m = 0;
-    for (int j = 0; j < n; ++j) {  // two-sum of q and e[j]
-      const double s = q + e[j];
-      const double bv = s - q;
-      const double av = s - bv;
-      const double err = (q - av) + (e[j] - bv);
-      if (err != 0) e[m++] = err;
-      q = s;
-    }
-    e[m++] = q;
-    n = m;
-  }
-  for (int j = n - 1; j >= 0; --j)
-    if (e[j] != 0) return e[j] > 0 ? 1 : -1;
-  return 0;
+  return rotorcert::runtime::hemisphere_sign<float>({a[0], a[1], a[2], a[3]}, {b[0], b[1], b[2], b[3]});
 }
 
 /// q/|q| in double with the largest component scaled out first.
@@ -342,6 +322,18 @@ HWY_INLINE Quat fast_unit_of_scaled(const Quat& qs) { return scale(qs, rsqrt(dot
 /// NORM-1 kernel: q/|q| for any finite nonzero q.
 HWY_INLINE Quat normalized(const Quat& q) { return unit_of_scaled(safe_scaled(q)); }
 
+/// Calls f(l) for every lane l set in `mask`: the scalar fallbacks (exact signs, binary64 paths)
+/// of the few lanes a kernel cannot settle in SIMD. Free when no lane is set.
+template <class F>
+HWY_INLINE void for_each_set_lane(M mask, F f) {
+  const D d;
+  if (HWY_LIKELY(hn::AllFalse(d, mask))) return;
+  std::uint8_t bits[kMaxLanes / 8] = {};
+  hn::StoreMaskBits(d, mask, bits);
+  for (std::size_t l = 0; l < hn::Lanes(d); ++l)
+    if ((bits[l >> 3] >> (l & 7)) & 1) f(l);
+}
+
 /// Lanes where the exact dot product a.b of the inputs is < 0 (the hemisphere rule, strict).
 /// as, bs: the inputs scaled by powers of two (no overflow in the float dot); a, b: the
 /// inputs as given (for the exact path). The float dot decides when it is farther from 0
@@ -358,15 +350,13 @@ HWY_INLINE M dot_negative(const Quat& as, const Quat& bs, const Quat& a, const Q
   M neg = hn::Lt(dt, hn::Zero(d));
   const M unsure = hn::Le(hn::Abs(dt), bound);
   if (HWY_UNLIKELY(!hn::AllFalse(d, unsure))) {
-    const std::size_t n = hn::Lanes(d);
     HWY_ALIGN float ra[4 * kMaxLanes], rb[4 * kMaxLanes], flag[kMaxLanes];
     store_quat(a, ra);
     store_quat(b, rb);
-    std::uint8_t bits[kMaxLanes / 8] = {};
-    hn::StoreMaskBits(d, unsure, bits);
     hn::Store(hn::IfThenElse(neg, hn::Set(d, -1.0f), hn::Set(d, 1.0f)), d, flag);
-    for (std::size_t l = 0; l < n; ++l)
-      if ((bits[l >> 3] >> (l & 7)) & 1) flag[l] = exact_dot_sign(ra + 4 * l, rb + 4 * l) < 0 ? -1.0f : 1.0f;
+    for_each_set_lane(unsure, [&](std::size_t l) {
+      flag[l] = exact_dot_sign(ra + 4 * l, rb + 4 * l) < 0 ? -1.0f : 1.0f;
+    });
     neg = hn::Lt(hn::Load(d, flag), hn::Zero(d));
   }
   return neg;
@@ -539,12 +529,7 @@ int Exp(std::size_t n, const float* v, float* out, std::uint8_t* status) {
     V theta;
     store_quat(poison(bad, exp_small(x, &theta)), o);
     const M far = hn::AndNot(bad, hn::Gt(theta, hn::Set(d, 8.0f)));
-    if (HWY_UNLIKELY(!hn::AllFalse(d, far))) {
-      std::uint8_t bits[kMaxLanes / 8] = {};
-      hn::StoreMaskBits(d, far, bits);
-      for (std::size_t l = 0; l < hn::Lanes(d); ++l)
-        if ((bits[l >> 3] >> (l & 7)) & 1) exp_double(p[0] + 3 * l, o + 4 * l);
-    }
+    for_each_set_lane(far, [&](std::size_t l) { exp_double(p[0] + 3 * l, o + 4 * l); });
     store_status(bad, s);
   });
   return 0;
@@ -578,12 +563,9 @@ int Slerp(std::size_t n, const float* a, const float* b, const float* t, float* 
                   const Quat res = select(hn::Eq(omega, hn::Zero(d)), ua, fast_unit_of_scaled(r));
                   store_quat(poison(bad, res), o);
                   const M far = hn::AndNot(bad, hn::Gt(hn::Abs(tt), hn::Set(d, 4.0f)));
-                  if (HWY_UNLIKELY(!hn::AllFalse(d, far))) {
-                    std::uint8_t bits[kMaxLanes / 8] = {};
-                    hn::StoreMaskBits(d, far, bits);
-                    for (std::size_t l = 0; l < hn::Lanes(d); ++l)
-                      if ((bits[l >> 3] >> (l & 7)) & 1) slerp_double(p[0] + 4 * l, p[1] + 4 * l, p[2][l], o + 4 * l);
-                  }
+                  for_each_set_lane(far, [&](std::size_t l) {
+                    slerp_double(p[0] + 4 * l, p[1] + 4 * l, p[2][l], o + 4 * l);
+                  });
                   store_status(bad, s);
                 });
   return 0;
