@@ -53,11 +53,8 @@ MV<T> dual_part(const MV<T>& m) { return euclidean_even(m.c[kE0123], ideal_as_eu
 template <class T>
 T dot3(const std::array<T, 3>& a, const std::array<T, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-template <class T>
-T norm3(const std::array<T, 3>& a) {
-  using std::sqrt;
-  return sqrt(dot3(a, a));
-}
+/// |a|, scaled against overflow and underflow: the one of cl3.hpp.
+using cl3::norm3;
 
 template <class T>
 std::array<T, 3> scaled3(const T& s, const std::array<T, 3>& a) { return {s * a[0], s * a[1], s * a[2]}; }
