@@ -16,6 +16,7 @@
 #include <rotorcert/reference/series.hpp>
 #include <rotorcert/testing/clause.hpp>
 #include <rotorcert/testing/generators.hpp>
+#include <rotorcert/testing/near.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
 namespace {
@@ -25,42 +26,18 @@ using namespace rotorcert::ref::clause;
 using rotorcert::testing::real_in;
 using rotorcert::testing::unit_quaternion;
 using rotorcert::testing::vector3;
+using rotorcert::testing::check_cases;
+using rotorcert::testing::near;
 using PMV = pga::MV<Real>;
 using DQ = DualQuaternion<Real>;
 using V3 = Vec3<Real>;
 
 // ---- tolerance: the spec's "ref" class, relative to max(1, |expected|) per component ----------
 
-const Real& ref_class() { return rotorcert::testing::ref_class_bar(); }
-
-bool near(const Real& got, const Real& want) {
-  return abs(got - want) <= ref_class() * std::max(Real(1), Real(abs(want)));
-}
-bool near(const V3& a, const V3& b) { return near(a[0], b[0]) && near(a[1], b[1]) && near(a[2], b[2]); }
-bool near(const Quaternion<Real>& a, const Quaternion<Real>& b) {
-  return near(a.w, b.w) && near(a.x, b.x) && near(a.y, b.y) && near(a.z, b.z);
-}
-bool near(const DQ& a, const DQ& b) { return near(a.real, b.real) && near(a.dual, b.dual); }
 bool near(const PMV& a, const PMV& b) {
   for (int i = 0; i < PGA3::size; ++i)
     if (!near(a.c[i], b.c[i])) return false;
   return true;
-}
-
-/// Runs a rapidcheck property with at most `cases` cases (MPFR at 256 bits is slow).
-template <class F>
-void check_cases(int cases, F property) {
-  rc::detail::TestParams params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  rc::detail::TestMetadata meta;
-  meta.id = std::string(::testing::UnitTest::GetInstance()->current_test_info()->name());
-  meta.description = meta.id;
-  const auto result = rc::detail::checkTestable(property, meta, params);
-  if (!result.template is<rc::detail::SuccessResult>()) {
-    std::ostringstream ss;
-    rc::detail::printResultMessage(result, ss);
-    ADD_FAILURE() << ss.str();
-  }
 }
 
 // ---- generators ------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/testing/clause.hpp>
 #include <rotorcert/testing/generators.hpp>
+#include <rotorcert/testing/near.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
 namespace {
@@ -25,37 +26,16 @@ using rotorcert::testing::quaternion;
 using rotorcert::testing::real_in;
 using rotorcert::testing::unit_quaternion;
 using rotorcert::testing::vector3;
+using rotorcert::testing::check_cases;
+using rotorcert::testing::near;
 using DQ = DualQuaternion<Real>;
 using Q = Quaternion<Real>;
 using V3 = Vec3<Real>;
 
 // ---- tolerance: the spec's "ref" class, relative to max(1, |expected|) per component ----------
 
-const Real& ref_class() { return rotorcert::testing::ref_class_bar(); }
-
-bool near(const Real& got, const Real& want) {
-  return abs(got - want) <= ref_class() * std::max(Real(1), Real(abs(want)));
-}
-bool near(const V3& a, const V3& b) { return near(a[0], b[0]) && near(a[1], b[1]) && near(a[2], b[2]); }
-bool near(const Q& a, const Q& b) { return near(a.w, b.w) && near(a.x, b.x) && near(a.y, b.y) && near(a.z, b.z); }
-bool near(const DQ& a, const DQ& b) { return near(a.real, b.real) && near(a.dual, b.dual); }
 /// The same rigid transform: sigma and -sigma.
 bool same_motion(const DQ& a, const DQ& b) { return near(a, b) || near(a, DQ{-b.real, -b.dual}); }
-
-template <class F>
-void check_cases(int cases, F property) {
-  rc::detail::TestParams params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  rc::detail::TestMetadata meta;
-  meta.id = std::string(::testing::UnitTest::GetInstance()->current_test_info()->name());
-  meta.description = meta.id;
-  const auto result = rc::detail::checkTestable(property, meta, params);
-  if (!result.template is<rc::detail::SuccessResult>()) {
-    std::ostringstream ss;
-    rc::detail::printResultMessage(result, ss);
-    ADD_FAILURE() << ss.str();
-  }
-}
 
 // ---- plain formulas ------------------------------------------------------------------------
 
@@ -157,7 +137,7 @@ TEST(DualQuaternion, ComposeAppliesTheRightOperandFirst) {
     // Associative, and the product of unit dual quaternions is unit.
     RC_ASSERT(near(DQ_2_compose(ab.value, c).value, DQ_2_compose(a, DQ_2_compose(b, c).value).value));
     RC_ASSERT(near(norm(ab.value.real), Real(1)));
-    RC_ASSERT(abs(dot(ab.value.real, ab.value.dual)) <= ref_class() * Real(1000000));
+    RC_ASSERT(abs(dot(ab.value.real, ab.value.dual)) <= rotorcert::testing::ref_class_bar() * Real(1000000));
   });
   // Translate by x, then quarter turn about z: the origin goes to (0, 1, 0).
   const Real h = sqrt(Real(1) / Real(2));
@@ -183,7 +163,7 @@ TEST(DualQuaternion, NormaliseMakesRealPartUnitAndDualPartOrthogonal) {
     const DQ expected{(Real(1) / r) * d.real, (Real(1) / r) * d.dual - (dot(d.real, d.dual) / (r * r * r)) * d.real};
     RC_ASSERT(near(n.value, expected));
     RC_ASSERT(near(norm(n.value.real), Real(1)));
-    RC_ASSERT(abs(dot(n.value.real, n.value.dual)) <= ref_class() * Real(1000));
+    RC_ASSERT(abs(dot(n.value.real, n.value.dual)) <= rotorcert::testing::ref_class_bar() * Real(1000));
     RC_ASSERT(near(DQ_4_normalize(n.value).value, n.value));  // idempotent
     // EDGE-5: k sigma + lambda (0, k q_r) normalise to the same (k > 0).
     const Real k = *positive_scale(), lambda = *real_in(4);

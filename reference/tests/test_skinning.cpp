@@ -13,6 +13,7 @@
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/testing/clause.hpp>
 #include <rotorcert/testing/generators.hpp>
+#include <rotorcert/testing/near.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
 namespace {
@@ -23,31 +24,11 @@ using rotorcert::testing::quaternion;
 using rotorcert::testing::real_in;
 using rotorcert::testing::unit_quaternion;
 using rotorcert::testing::vector3;
+using rotorcert::testing::check_cases;
+using rotorcert::testing::near;
 using DQ = DualQuaternion<Real>;
 using Q = Quaternion<Real>;
 using V3 = Vec3<Real>;
-
-const Real& ref_class() { return rotorcert::testing::ref_class_bar(); }
-
-bool near(const Real& got, const Real& want) {
-  return abs(got - want) <= ref_class() * std::max(Real(1), Real(abs(want)));
-}
-bool near(const V3& a, const V3& b) { return near(a[0], b[0]) && near(a[1], b[1]) && near(a[2], b[2]); }
-
-template <class F>
-void check_cases(int cases, F property) {
-  rc::detail::TestParams params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  rc::detail::TestMetadata meta;
-  meta.id = std::string(::testing::UnitTest::GetInstance()->current_test_info()->name());
-  meta.description = meta.id;
-  const auto result = rc::detail::checkTestable(property, meta, params);
-  if (!result.template is<rc::detail::SuccessResult>()) {
-    std::ostringstream ss;
-    rc::detail::printResultMessage(result, ss);
-    ADD_FAILURE() << ss.str();
-  }
-}
 
 // ---- plain formulas ------------------------------------------------------------------------
 
