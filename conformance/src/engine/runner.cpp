@@ -67,14 +67,6 @@ std::string join_values(const std::vector<Real>& v, bool hexfloat, ref::Format f
   return s + "]";
 }
 
-std::string describe_inputs(const AbiOp& op, const Case& c, ref::Format f) {
-  std::string s;
-  for (std::size_t a = 0; a < op.inputs.size(); ++a)
-    s += (a ? " " : "") + op.inputs[a].name + "=" + join_values(c.inputs[a], true, f);
-  if (op.nway) s += " k=" + std::to_string(c.k);
-  return s;
-}
-
 Quat quat(const std::vector<Real>& a) { return {a[3], a[0], a[1], a[2]}; }
 ref::DualQuaternion<Real> dq(const std::vector<Real>& a) { return {{a[3], a[0], a[1], a[2]}, {a[7], a[4], a[5], a[6]}}; }
 
@@ -133,6 +125,8 @@ bool all_nan(const std::vector<Real>& v) {
   return std::all_of(v.begin(), v.end(), [](const Real& x) { return mpfr::isnan(x); });
 }
 
+}  // namespace
+
 /// Strict and loose bars for one case, in eps units (the unit errors are compared in).
 ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& c, const Real& eps) {
   if (tc.kind == "exact") return {0, 0};
@@ -156,117 +150,160 @@ ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& 
   return {strict->toDouble(), loose->toDouble()};
 }
 
-struct Judge {
-  ClauseResult& result;
-  ref::Verdict worst_verdict = ref::Verdict::pass;
+namespace {
 
-  /// Keeps the worst case: the highest verdict, then the largest error (NaN counts as infinite).
-  void record(ref::Verdict v, double error, const AbiOp& op, const Case& c, ref::Format f, const std::string& detail) {
-    ++result.cases;
-    if (v == ref::Verdict::fail) ++result.failures;
-    if (std::isfinite(error)) result.errors.push_back(error);
-    const double key = std::isnan(error) ? INFINITY : error;
-    const double worst_key = std::isnan(result.worst_error) ? INFINITY : result.worst_error;
-    const bool first = result.worst_op.empty();
-    if (first || static_cast<int>(v) > static_cast<int>(worst_verdict) || (v == worst_verdict && key > worst_key)) {
-      worst_verdict = v;
-      result.worst_error = error;
-      result.worst_op = op.name;
-      result.worst_label = c.label;
-      result.worst_input = describe_inputs(op, c, f);
-      result.worst_detail = detail;
-    }
-  }
-};
-
-template <class S>
-void run_check(const rc_impl& table, const spec::Spec& spec, const spec::ToleranceClass& tc, const Check& check,
-               Judge& judge) {
+/// Runs one check: observe in batches (or one at a time), judge each case.
+template <class Record>
+void run_check(const rc_impl& table, const spec::ToleranceClass& tc, const Check& check, const RunHooks& hooks,
+               Record record) {
   const ref::Format f = format_of(table);
-  const Real eps = ref::format_epsilon<Real>(f);
   const AbiOp& op = *find_abi_op(check.op);
-  std::map<std::size_t, std::vector<const Case*>> groups;  // n-way calls share one k
-  for (const Case& c : check.cases) groups[c.k].push_back(&c);
-  for (const auto& [k, cases] : groups) {
-    Buffers<S> buf;
-    buf.fill(op, cases, k);
-    const int rc = call(table, op.name, cases.size(), k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
-
-    // EXP-2: feed log's output to exp and compare with the input rotation.
-    Buffers<S> second;
-    if (check.log_exp_round_trip && rc == 0) {
+  std::vector<std::vector<const Case*>> batches;
+  if (hooks.one_at_a_time) {
+    for (const Case& c : check.cases) batches.push_back({&c});
+  } else {
+    std::map<std::size_t, std::vector<const Case*>> groups;  // n-way calls share one k
+    for (const Case& c : check.cases) groups[c.k].push_back(&c);
+    for (auto& [k, cases] : groups) batches.push_back(std::move(cases));
+  }
+  for (const auto& cases : batches) {
+    const std::size_t k = cases.front()->k;
+    if (hooks.before_call) hooks.before_call(op, cases);
+    const std::vector<Observed> got = observe(table, op, cases, k);
+    if (check.log_exp_round_trip) {
+      // EXP-2: feed log's output to exp and compare with the input rotation.
       const AbiOp& exp_op = *find_abi_op("exp");
       std::vector<Case> logs;
-      for (std::size_t i = 0; i < cases.size(); ++i) logs.push_back(Case{{buf.output(op, 0, i)}, 0, "log output"});
+      for (std::size_t i = 0; i < cases.size(); ++i) logs.push_back(Case{{got[i].outputs.at(0)}, 0, "log output"});
       std::vector<const Case*> ptrs;
       for (const Case& c : logs) ptrs.push_back(&c);
-      second.fill(exp_op, ptrs, 0);
-      call(table, "exp", ptrs.size(), 0, second.in_ptrs, second.out_ptrs, second.status.data());
+      if (hooks.before_call) hooks.before_call(exp_op, ptrs);
+      const std::vector<Observed> second = observe(table, exp_op, ptrs, 0);
+      for (std::size_t i = 0; i < cases.size(); ++i)
+        record(judge_round_trip(tc, *cases[i], got[i], second[i], f), op, *cases[i]);
+      continue;
     }
-
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-      const Case& c = *cases[i];
-      if (rc != 0) {
-        judge.record(ref::Verdict::fail, NAN, op, c, f, "the batch call returned " + std::to_string(rc));
-        continue;
-      }
-      const std::uint8_t st = buf.status[i];
-      if (check.log_exp_round_trip) {
-        const std::vector<Real> got = second.output(*find_abi_op("exp"), 0, i);
-        const bool ok = st == RC_OK && second.status[i] == RC_OK;
-        const Real e = ok ? clause::METRIC_1_rotation_distance(quat(got), quat(c.inputs[0])) / eps
-                          : ref::ScalarTraits<Real>::nan();
-        const double err = e.toDouble();
-        const auto b = bars_for(tc, op, c, eps);
-        judge.record(ref::clause::TOL_1_verdict(err, b), err, op, c, f,
-                     "exp(log q) = " + join_values(got, false, f) + ", q = " + join_values(c.inputs[0], false, f));
-        continue;
-      }
-      const ReferenceResult want = op.reference(c.inputs, c.k);
-      std::vector<std::vector<Real>> got;
-      for (std::size_t a = 0; a < op.outputs.size(); ++a) got.push_back(buf.output(op, a, i));
-      auto got_text = [&] {
-        std::string s;
-        for (std::size_t a = 0; a < got.size(); ++a) s += (a ? " " : "") + join_values(got[a], false, f);
-        return s;
-      };
-      if (st != RC_OK && st != RC_DOMAIN_ERROR) {
-        judge.record(ref::Verdict::fail, NAN, op, c, f, "status byte " + std::to_string(st) + " is neither OK nor DOMAIN_ERROR");
-        continue;
-      }
-      if (want.status == ref::Status::domain_error) {
-        const bool nan_out = std::all_of(got.begin(), got.end(), all_nan);
-        if (st == RC_DOMAIN_ERROR && nan_out) {
-          judge.record(ref::Verdict::pass, 0, op, c, f, "DOMAIN_ERROR with NaN outputs, as required");
-        } else {
-          judge.record(ref::Verdict::fail, NAN, op, c, f,
-                       std::string("expected DOMAIN_ERROR with all outputs NaN, got ") +
-                           (st == RC_OK ? "OK" : "DOMAIN_ERROR") + " " + got_text());
-        }
-        continue;
-      }
-      if (st == RC_DOMAIN_ERROR) {
-        judge.record(ref::Verdict::fail, NAN, op, c, f, "spurious DOMAIN_ERROR on an input inside the domain");
-        continue;
-      }
-      const Real scale = op.scale(c.inputs, c.k);
-      Real e(0);
-      std::string detail;
-      for (std::size_t a = 0; a < op.outputs.size(); ++a) {
-        const Real ea = measure(op.outputs[a].measure, got[a], want.outputs[a], scale, ref::format_min_normal<Real>(f));
-        if (mpfr::isnan(ea) || ea > e || mpfr::isnan(e)) e = ea;
-        detail += (a ? "; " : "") + op.outputs[a].name + " expected " + join_values(want.outputs[a], false, f) +
-                  " got " + join_values(got[a], false, f);
-      }
-      const double err = (e / eps).toDouble();
-      const auto b = bars_for(tc, op, c, eps);
-      judge.record(ref::clause::TOL_1_verdict(err, b), err, op, c, f, detail);
-    }
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      record(judge_case(op, tc, *cases[i], got[i], f, hooks.convention), op, *cases[i]);
   }
-  (void)spec;
+}
+
+std::vector<Check> supported_checks(const rc_impl& table, const spec::Spec& spec, const std::string& clause_id,
+                                    const CaseOptions& options) {
+  return checks_for_clause(spec, clause_id, format_of(table), options,
+                           [&](const std::string& op) { return supports(table, op); });
+}
+
+const spec::ToleranceClass& class_of(const spec::Spec& spec, const spec::Clause& cl, const Check& check) {
+  return spec.lookup(check.tolerance.empty() ? cl.tolerance : check.tolerance);
 }
 
 }  // namespace
+
+std::string hexfloat(const Real& x, ref::Format f) { return hex(x, f); }
+
+std::string describe_inputs(const AbiOp& op, const Case& c, ref::Format f) {
+  std::string s;
+  for (std::size_t a = 0; a < op.inputs.size(); ++a)
+    s += (a ? " " : "") + op.inputs[a].name + "=" + join_values(c.inputs[a], true, f);
+  if (op.nway) s += " k=" + std::to_string(c.k);
+  return s;
+}
+
+std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases,
+                              std::size_t k) {
+  std::vector<Observed> result(cases.size());
+  auto run = [&](auto tag) {
+    using S = decltype(tag);
+    Buffers<S> buf;
+    buf.fill(op, cases, k);
+    const int rc = call(table, op.name, cases.size(), k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      result[i].call_rc = rc;
+      result[i].status = buf.status[i];
+      for (std::size_t a = 0; a < op.outputs.size(); ++a) result[i].outputs.push_back(buf.output(op, a, i));
+    }
+  };
+  if (table.scalar == RC_SCALAR_FLOAT32) run(float{});
+  else run(double{});
+  return result;
+}
+
+CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, const Observed& log_got,
+                             const Observed& exp_got, ref::Format f) {
+  const Real eps = ref::format_epsilon<Real>(f);
+  const AbiOp& op = *find_abi_op("log");
+  if (log_got.call_rc != 0 || exp_got.call_rc != 0)
+    return {ref::Verdict::fail, NAN, "the batch call returned " + std::to_string(log_got.call_rc ? log_got.call_rc : exp_got.call_rc)};
+  const std::vector<Real>& got = exp_got.outputs.at(0);
+  const bool ok = log_got.status == RC_OK && exp_got.status == RC_OK;
+  const Real e = ok ? clause::METRIC_1_rotation_distance(quat(got), quat(c.inputs[0])) / eps
+                    : ref::ScalarTraits<Real>::nan();
+  const double err = e.toDouble();
+  return {ref::clause::TOL_1_verdict(err, bars_for(tc, op, c, eps)), err,
+          "exp(log q) = " + join_values(got, false, f) + ", q = " + join_values(c.inputs[0], false, f)};
+}
+
+CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& obs,
+                       ref::Format f, const Convention* convention) {
+  const Real eps = ref::format_epsilon<Real>(f);
+  if (obs.call_rc != 0) return {ref::Verdict::fail, NAN, "the batch call returned " + std::to_string(obs.call_rc)};
+  const std::vector<std::vector<Real>>& got = obs.outputs;
+  auto got_text = [&] {
+    std::string s;
+    for (std::size_t a = 0; a < got.size(); ++a) s += (a ? " " : "") + join_values(got[a], false, f);
+    return s;
+  };
+  const std::uint8_t st = obs.status;
+  if (st != RC_OK && st != RC_DOMAIN_ERROR)
+    return {ref::Verdict::fail, NAN, "status byte " + std::to_string(st) + " is neither OK nor DOMAIN_ERROR"};
+  ReferenceResult want = op.reference(convention ? convention->map_inputs(op, c.inputs) : c.inputs, c.k);
+  if (convention && want.status == ref::Status::ok) want.outputs = convention->map_outputs(op, want.outputs);
+  if (want.status == ref::Status::domain_error) {
+    if (st == RC_DOMAIN_ERROR && std::all_of(got.begin(), got.end(), all_nan))
+      return {ref::Verdict::pass, 0, "DOMAIN_ERROR with NaN outputs, as required"};
+    return {ref::Verdict::fail, NAN,
+            std::string("expected DOMAIN_ERROR with all outputs NaN, got ") + (st == RC_OK ? "OK" : "DOMAIN_ERROR") + " " +
+                got_text()};
+  }
+  if (st == RC_DOMAIN_ERROR) return {ref::Verdict::fail, NAN, "spurious DOMAIN_ERROR on an input inside the domain"};
+  const Real scale = op.scale(c.inputs, c.k);
+  Real e(0);
+  std::string detail;
+  for (std::size_t a = 0; a < op.outputs.size(); ++a) {
+    const Real ea = measure(op.outputs[a].measure, got[a], want.outputs[a], scale, ref::format_min_normal<Real>(f));
+    if (mpfr::isnan(ea) || ea > e || mpfr::isnan(e)) e = ea;
+    detail += (a ? "; " : "") + op.outputs[a].name + " expected " + join_values(want.outputs[a], false, f) + " got " +
+              join_values(got[a], false, f);
+  }
+  const double err = (e / eps).toDouble();
+  return {ref::clause::TOL_1_verdict(err, bars_for(tc, op, c, eps)), err, detail};
+}
+
+void ClauseJudge::record(const CaseVerdict& v, const AbiOp& op, const Case& c, ref::Format f) {
+  ++result.cases;
+  if (v.verdict == ref::Verdict::fail) ++result.failures;
+  if (std::isfinite(v.error)) result.errors[op.name].push_back(v.error);
+  // The worst case: the highest verdict, then the largest error (NaN counts as infinite).
+  const double key = std::isnan(v.error) ? INFINITY : v.error;
+  const double worst_key = std::isnan(result.worst_error) ? INFINITY : result.worst_error;
+  const bool first = result.worst_op.empty();
+  if (first || static_cast<int>(v.verdict) > static_cast<int>(worst_verdict) ||
+      (v.verdict == worst_verdict && key > worst_key)) {
+    worst_verdict = v.verdict;
+    result.worst_error = v.error;
+    result.worst_op = op.name;
+    result.worst_label = c.label;
+    result.worst_input = describe_inputs(op, c, f);
+    result.worst_detail = v.detail;
+  }
+}
+
+void ClauseJudge::finish() {
+  result.outcome = worst_verdict == ref::Verdict::pass              ? Outcome::pass
+                   : worst_verdict == ref::Verdict::quality_warning ? Outcome::quality_warning
+                                                                    : Outcome::fail;
+}
 
 const char* to_string(Outcome o) {
   switch (o) {
@@ -274,8 +311,20 @@ const char* to_string(Outcome o) {
     case Outcome::quality_warning: return "QUALITY_WARNING";
     case Outcome::fail: return "FAIL";
     case Outcome::not_supported: return "NOT_SUPPORTED";
+    case Outcome::crash: return "CRASH";
+    case Outcome::timeout: return "TIMEOUT";
   }
   return "FAIL";
+}
+
+bool parse_outcome(const std::string& code, Outcome& out) {
+  for (Outcome o : {Outcome::pass, Outcome::quality_warning, Outcome::fail, Outcome::not_supported, Outcome::crash,
+                    Outcome::timeout})
+    if (code == to_string(o)) {
+      out = o;
+      return true;
+    }
+  return false;
 }
 
 ref::Format format_of(const rc_impl& table) {
@@ -289,33 +338,57 @@ std::vector<std::string> claimed_clauses(const rc_impl& table) {
 }
 
 ClauseResult run_clause(const rc_impl& table, const spec::Spec& spec, const std::string& clause_id,
-                        const CaseOptions& options) {
+                        const CaseOptions& options, const RunHooks& hooks) {
   ClauseResult result;
   result.clause = clause_id;
   const spec::Clause* cl = spec.find_clause(clause_id);
   if (cl == nullptr) {
     result.outcome = Outcome::fail;
-    result.worst_detail = "no clause " + clause_id + " in the spec";
+    result.note = "no clause " + clause_id + " in the spec";
+    result.worst_detail = result.note;
     return result;
   }
   result.level = cl->level;
   result.tolerance = cl->tolerance;
-  const auto checks = checks_for_clause(spec, clause_id, format_of(table), options,
-                                        [&](const std::string& op) { return supports(table, op); });
+  const auto checks = supported_checks(table, spec, clause_id, options);
   if (checks.empty()) {
     result.outcome = Outcome::not_supported;
+    result.note = "the table provides none of the operations that judge this clause";
     return result;
   }
-  Judge judge{result};
-  for (const Check& check : checks) {
-    const spec::ToleranceClass& tc = spec.lookup(check.tolerance.empty() ? cl->tolerance : check.tolerance);
-    if (table.scalar == RC_SCALAR_FLOAT32) run_check<float>(table, spec, tc, check, judge);
-    else run_check<double>(table, spec, tc, check, judge);
-  }
-  result.outcome = judge.worst_verdict == ref::Verdict::pass              ? Outcome::pass
-                   : judge.worst_verdict == ref::Verdict::quality_warning ? Outcome::quality_warning
-                                                                          : Outcome::fail;
+  const ref::Format f = format_of(table);
+  ClauseJudge judge{result};
+  for (const Check& check : checks)
+    run_check(table, class_of(spec, *cl, check), check, hooks,
+              [&](const CaseVerdict& v, const AbiOp& op, const Case& c) { judge.record(v, op, c, f); });
+  judge.finish();
   return result;
+}
+
+std::vector<std::string> detect_conventions(const rc_impl& table, const spec::Spec& spec, const std::string& clause_id,
+                                            const CaseOptions& options) {
+  std::vector<std::string> found;
+  const spec::Clause* cl = spec.find_clause(clause_id);
+  if (cl == nullptr) return found;
+  const auto checks = supported_checks(table, spec, clause_id, options);
+  for (const Convention& convention : conventions()) {
+    bool applies = false, explains = true;
+    RunHooks hooks;
+    hooks.convention = &convention;
+    for (const Check& check : checks) {
+      // The round trip of EXP-2 is convention-free; an op the hypothesis does not touch would
+      // fail the same way, so it is not evidence either way.
+      if (check.log_exp_round_trip || !convention.applies(*find_abi_op(check.op))) continue;
+      applies = true;
+      run_check(table, class_of(spec, *cl, check), check, hooks,
+                [&](const CaseVerdict& v, const AbiOp&, const Case&) {
+                  if (v.verdict == ref::Verdict::fail) explains = false;
+                });
+      if (!explains) break;
+    }
+    if (applies && explains) found.push_back(convention.id);
+  }
+  return found;
 }
 
 }  // namespace rotorcert::engine

@@ -1,26 +1,56 @@
 // Runs the checks of a clause on an implementation's table and judges them against the
 // reference with the clause's tolerance class (TOL-1): the in-process core of certification.
+//
+// Two halves, so that every route to a verdict shares one comparison:
+//   observe()    calls the implementation on a batch of cases and reads back what it wrote;
+//   judge_case() compares one case's observation with the 256-bit reference.
+// run_clause() is both halves over the checks of a clause. `rotorcert vectors check` judges
+// observations read from a results file, the property tests judge one generated case at a time,
+// and the fuzzers judge decoded bytes: all through judge_case().
 // (Running an implementation in an isolated child process is the certify tool's business.)
 #pragma once
 
+#include <cstdint>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include <rotorcert/engine/cases.hpp>
+#include <rotorcert/engine/convention.hpp>
 #include <rotorcert/impl_abi.h>
+#include <rotorcert/reference/tolerance.hpp>
 #include <rotorcert/spec/spec.hpp>
 
 namespace rotorcert::engine {
 
-/// RESULT-1 codes that an in-process run can produce (CRASH and TIMEOUT need isolation).
-enum class Outcome { pass, quality_warning, fail, not_supported };
+/// RESULT-1 codes. An in-process run produces the first four; CRASH and TIMEOUT come from the
+/// isolating runner of the certify tool.
+enum class Outcome { pass, quality_warning, fail, not_supported, crash, timeout };
 const char* to_string(Outcome o);
+/// The Outcome named by a RESULT-1 code ("PASS", ...); false if there is none.
+bool parse_outcome(const std::string& code, Outcome& out);
+
+/// What an implementation gave back for one case.
+struct Observed {
+  int call_rc = 0;              // the batch call's return value; nonzero: the call as a whole failed
+  std::uint8_t status = RC_OK;  // the element's status byte (RESULT-2)
+  Values outputs;               // one vector per output array of the op, as exact values
+};
+
+/// The judgement of one case.
+struct CaseVerdict {
+  ref::Verdict verdict = ref::Verdict::pass;
+  double error = 0;  // in eps units for eps classes; NaN for a wrong status or a NaN output
+  std::string detail;  // expected versus got, in decimal
+};
 
 struct ClauseResult {
   std::string clause;
   std::string level;
   std::string tolerance;
   Outcome outcome = Outcome::not_supported;
+  std::string note;          // why NOT_SUPPORTED, CRASH or TIMEOUT, or what else the reader must know
   std::size_t cases = 0;     // inputs evaluated
   std::size_t failures = 0;  // inputs beyond the loose bar or with a wrong status
   /// The worst input: its error (in eps units for eps classes, else in the class's unit; NaN for
@@ -28,16 +58,65 @@ struct ClauseResult {
   /// what was expected versus what came back.
   double worst_error = 0;
   std::string worst_op, worst_label, worst_input, worst_detail;
-  /// Every finite error measured, for percentiles and histograms.
-  std::vector<double> errors;
+  /// Every finite error measured (eps units), per ABI op, in case order: percentiles, histograms.
+  std::map<std::string, std::vector<double>> errors;
+  /// Conventions (convention.hpp) under which a failing clause passes: a consistent but different
+  /// convention rather than a numerical defect. Filled by detect_conventions().
+  std::vector<std::string> conventions;
 };
 
 /// The ref::Format of a table.
 ref::Format format_of(const rc_impl& table);
 
+/// Element values as text: hexfloat of the format ("0x1.8p+0") and decimal (12 digits).
+std::string hexfloat(const Real& x, ref::Format f);
+std::string describe_inputs(const AbiOp& op, const Case& c, ref::Format f);
+
+/// Calls `op` once on all `cases` (they share one k) and reads back status bytes and outputs.
+std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases,
+                              std::size_t k);
+
+/// Strict and loose bars of class `tc` for one case, in the unit errors are compared in.
+ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& c, const Real& eps);
+
+/// Judges one case: the reference on c.inputs (mapped by `convention` if given) against `got`.
+CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got,
+                       ref::Format f, const Convention* convention = nullptr);
+
+/// EXP-2: judges exp(log q) = q, given what log returned (`log_got`) and what exp returned when
+/// fed that (`exp_got`). c is the log case.
+CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, const Observed& log_got,
+                             const Observed& exp_got, ref::Format f);
+
+/// Accumulates case verdicts into a ClauseResult: counts, the worst case, the error lists.
+struct ClauseJudge {
+  ClauseResult& result;
+  ref::Verdict worst_verdict = ref::Verdict::pass;
+  void record(const CaseVerdict& v, const AbiOp& op, const Case& c, ref::Format f);
+  /// Sets result.outcome from the worst verdict (PASS, QUALITY_WARNING or FAIL).
+  void finish();
+};
+
+/// Hooks of a run, for the isolating runner and convention detection.
+struct RunHooks {
+  /// Called before each call into the implementation with the cases it is about to receive, so a
+  /// crash can be pinned on them.
+  std::function<void(const AbiOp& op, const std::vector<const Case*>& cases)> before_call;
+  /// Calls each case on its own (n = 1) instead of one batch per op: slower, but pins a crash on
+  /// one input.
+  bool one_at_a_time = false;
+  /// Judges under this convention instead of the spec's (detect_conventions()).
+  const Convention* convention = nullptr;
+};
+
 /// Runs and judges one clause. A clause without any check the table supports is NOT_SUPPORTED.
 ClauseResult run_clause(const rc_impl& table, const spec::Spec& spec, const std::string& clause,
-                        const CaseOptions& options);
+                        const CaseOptions& options, const RunHooks& hooks = {});
+
+/// For a FAILed clause: the ids of the conventions under which the same cases all pass (PASS or
+/// QUALITY_WARNING). Runs the implementation again on the same cases.
+std::vector<std::string> detect_conventions(const rc_impl& table, const spec::Spec& spec,
+                                            const std::string& clause, const CaseOptions& options);
 
 /// The clause IDs a table claims.
 std::vector<std::string> claimed_clauses(const rc_impl& table);
