@@ -26,4 +26,13 @@ Command add_selfcheck(CLI::App& parent);
 /// `rotorcert list [--plugin PATH]...` (cmd_list.cpp).
 Command add_list(CLI::App& parent);
 
+/// `rotorcert certify --impl NAME | --plugin PATH ... --out DIR` (cmd_certify.cpp).
+Command add_certify(CLI::App& parent);
+
+/// `rotorcert report --out DIR ...` (cmd_report.cpp).
+Command add_report(CLI::App& parent);
+
+/// `rotorcert vectors export --out DIR` and `rotorcert vectors check FILE` (cmd_vectors.cpp).
+Command add_vectors(CLI::App& parent);
+
 }  // namespace rotorcert::cli

@@ -25,10 +25,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("rotorcert ") + ROTORCERT_VERSION);
   app.require_subcommand(1);
 
-  // One line per subcommand; later: certify, report, vectors.
+  // One line per subcommand.
   const std::vector<Command> commands = {
-      add_selfcheck(app),
-      add_list(app),
+      add_report(app), add_certify(app), add_vectors(app), add_list(app), add_selfcheck(app),
   };
 
   try {

@@ -584,6 +584,21 @@ Real round_to(ref::Format format, const Real& x) {
   return Real(mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN));
 }
 
+std::string tolerance_for(const spec::Spec& spec, const std::string& clause, const std::string& op) {
+  const spec::Clause* cl = spec.find_clause(clause);
+  if (cl == nullptr) return {};
+  if (clause.rfind("EDGE-", 0) == 0 && cl->tolerance != "exact") {
+    // An edge clause applied to an op judges numbers with the looser of the two classes; an
+    // "outcome" clause (status and NaN pattern only) judges any number with the op's class.
+    const auto* mc = spec.find_clause(main_clause_of(op));
+    if (mc && spec.lookup(mc->tolerance).kind == "eps" &&
+        (cl->tolerance == "outcome" ||
+         spec.lookup(mc->tolerance).strict_value() > spec.lookup(cl->tolerance).strict_value()))
+      return mc->tolerance;
+  }
+  return cl->tolerance;
+}
+
 std::vector<std::string> ops_for_clause(const std::string& clause) {
   const auto& t = clause_ops();
   const auto it = t.find(clause);
@@ -620,16 +635,7 @@ std::vector<Check> checks_for_clause_impl(const spec::Spec& spec, const std::str
       }
     }
     add_families(check.cases, g, clause, op, options.cases_per_family);
-    if (clause.rfind("EDGE-", 0) == 0 && cl->tolerance != "exact") {
-      // An edge clause applied to an op judges numbers with the looser of the two classes; an
-      // "outcome" clause (status and NaN pattern only) judges any number with the op's class.
-      const std::string main = main_clause_of(op);
-      const auto* mc = spec.find_clause(main);
-      if (mc && spec.lookup(mc->tolerance).kind == "eps" &&
-          (cl->tolerance == "outcome" ||
-           spec.lookup(mc->tolerance).strict_value() > spec.lookup(cl->tolerance).strict_value()))
-        check.tolerance = mc->tolerance;
-    }
+    if (const std::string tc = tolerance_for(spec, clause, op); tc != cl->tolerance) check.tolerance = tc;
     if (!check.cases.empty()) checks.push_back(std::move(check));
   }
   return checks;

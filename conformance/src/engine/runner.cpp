@@ -283,7 +283,11 @@ CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Ca
 void ClauseJudge::record(const CaseVerdict& v, const AbiOp& op, const Case& c, ref::Format f) {
   ++result.cases;
   if (v.verdict == ref::Verdict::fail) ++result.failures;
-  if (std::isfinite(v.error)) result.errors[op.name].push_back(v.error);
+  if (std::isfinite(v.error)) {
+    result.errors[op.name].push_back(v.error);
+    auto [it, fresh] = result.worst_by_op.try_emplace(op.name);
+    if (fresh || v.error > it->second.error) it->second = {v.error, c.label, describe_inputs(op, c, f), v.detail};
+  }
   // The worst case: the highest verdict, then the largest error (NaN counts as infinite).
   const double key = std::isnan(v.error) ? INFINITY : v.error;
   const double worst_key = std::isnan(result.worst_error) ? INFINITY : result.worst_error;

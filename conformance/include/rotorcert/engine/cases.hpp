@@ -54,6 +54,10 @@ std::vector<Check> checks_for_clause_impl(const spec::Spec& spec, const std::str
 /// The ABI ops that can judge `clause` at all (whether or not an implementation supports them).
 std::vector<std::string> ops_for_clause(const std::string& clause);
 
+/// The tolerance class that judges `op` under `clause`: the clause's own class, or for an edge
+/// clause applied to an op the op's class when that is looser (see checks_for_clause).
+std::string tolerance_for(const spec::Spec& spec, const std::string& clause, const std::string& op);
+
 /// x rounded to the nearest value of the format (binary32 or binary64), as an exact Real.
 Real round_to(ref::Format format, const Real& x);
 

@@ -45,6 +45,12 @@ struct CaseVerdict {
   std::string detail;  // expected versus got, in decimal
 };
 
+/// The worst case of one op within a clause (finite errors only): for the accuracy tables.
+struct WorstCase {
+  double error = 0;  // eps units
+  std::string label, input, detail;
+};
+
 struct ClauseResult {
   std::string clause;
   std::string level;
@@ -60,6 +66,8 @@ struct ClauseResult {
   std::string worst_op, worst_label, worst_input, worst_detail;
   /// Every finite error measured (eps units), per ABI op, in case order: percentiles, histograms.
   std::map<std::string, std::vector<double>> errors;
+  /// The largest finite error per ABI op, with its input.
+  std::map<std::string, WorstCase> worst_by_op;
   /// Conventions (convention.hpp) under which a failing clause passes: a consistent but different
   /// convention rather than a numerical defect. Filled by detect_conventions().
   std::vector<std::string> conventions;
