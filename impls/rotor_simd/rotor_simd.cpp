@@ -317,7 +317,17 @@ HWY_INLINE V rsqrt(V x) {
   return hn::IfThenElse(hn::Eq(x, one), one, r);  // exact for unit input: identity in, identity out (EDGE-1)
 #endif
 }
-HWY_INLINE Quat fast_unit_of_scaled(const Quat& qs) { return scale(qs, rsqrt(dot(qs, qs))); }
+/// q/|q| through rsqrt; a pure scalar (x = y = z = 0) comes out as exactly (0, 0, 0, +-1), which
+/// rsqrt alone guarantees only when |q| is exactly 1 (a weighted sum of identities is not: EDGE-1).
+HWY_INLINE Quat fast_unit_of_scaled(const Quat& qs) {
+  const D d;
+  Quat u = scale(qs, rsqrt(dot(qs, qs)));
+  const V zero = hn::Zero(d);
+  const M scalar_only = hn::And(hn::And(hn::And(hn::Eq(qs.x, zero), hn::Eq(qs.y, zero)), hn::Eq(qs.z, zero)),
+                                hn::And(hn::IsFinite(qs.w), hn::Ne(qs.w, zero)));  // 0 and NaN stay NaN
+  u.w = hn::IfThenElse(scalar_only, hn::CopySign(hn::Set(d, 1.0f), qs.w), u.w);
+  return u;
+}
 
 /// NORM-1 kernel: q/|q| for any finite nonzero q.
 HWY_INLINE Quat normalized(const Quat& q) { return unit_of_scaled(safe_scaled(q)); }
