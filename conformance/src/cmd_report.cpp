@@ -1,10 +1,168 @@
-// in progress
+// `rotorcert report --out DIR`: the main job. Certifies every built-in implementation (each
+// clause in an isolated child process), runs every mutant of conformance/mutants/ against the
+// clauses it must break, and writes report.json, report.md and report.html.
+// Exit 0 when every table behaves as expected (its known defects, impls/*/expected_failures.json,
+// FAIL and everything else it claims passes) and every mutant is killed; 1 otherwise; 2 on usage.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include <rotorcert/certify/certify.hpp>
+
+#include "certify_cli.hpp"
 #include "commands.hpp"
+
+#ifndef ROTORCERT_MUTANT_DIR
+#error "ROTORCERT_MUTANT_DIR must be defined by the build"
+#endif
+#ifndef ROTORCERT_MUTANTS_JSON
+#error "ROTORCERT_MUTANTS_JSON must be defined by the build"
+#endif
+
 namespace rotorcert::cli {
-Command add_report(CLI::App& parent) {
-  Command c;
-  c.app = parent.add_subcommand("report", "report");
-  c.run = [] { return kExitUsage; };
-  return c;
+namespace {
+
+struct Args {
+  CertifyCli common;
+  std::vector<std::string> impls;
+  std::string mutant_dir = ROTORCERT_MUTANT_DIR;
+  bool no_mutants = false;
+};
+
+struct MutantRun {
+  certify::json entry;           // the mutants.json entry
+  std::size_t target = SIZE_MAX;  // index into the targets, or SIZE_MAX when it could not be loaded
+  std::string error;
+};
+
+/// The mutants section: each mutant judged on the clauses it must break; killed when every one
+/// of them FAILs.
+certify::json mutants_section(const std::vector<MutantRun>& runs, const std::vector<certify::Certificate>& certs,
+                              std::size_t first, const std::string& dir) {
+  certify::json list = certify::json::array();
+  int killed = 0;
+  for (const MutantRun& m : runs) {
+    certify::json j = {{"mutant", m.entry.at("mutant")}, {"scalar", m.entry.at("scalar")}, {"bug", m.entry.at("bug")},
+                       {"breaks", m.entry.at("breaks")}};
+    bool all_fail = m.error.empty();
+    certify::json clauses = certify::json::array();
+    if (m.target != SIZE_MAX) {
+      for (const engine::ClauseResult& r : certs[first + m.target].clauses) {
+        all_fail = all_fail && r.outcome == engine::Outcome::fail;
+        clauses.push_back({{"id", r.clause},
+                           {"outcome", engine::to_string(r.outcome)},
+                           {"label", r.worst_label},
+                           {"input", r.worst_input},
+                           {"detail", r.worst_detail},
+                           {"conventions", r.conventions}});
+      }
+    }
+    j["clauses"] = clauses;
+    j["error"] = m.error.empty() ? certify::json(nullptr) : certify::json(m.error);
+    j["killed"] = all_fail;
+    killed += all_fail ? 1 : 0;
+    list.push_back(j);
+  }
+  return {{"directory", dir}, {"killed", killed}, {"total", runs.size()}, {"mutants", list}};
 }
+
+int run(const Args& a) {
+  const auto started = std::chrono::steady_clock::now();
+  spec::Spec spec;
+  certify::CertifyOptions options;
+  try {
+    spec = spec::load_spec(spec::resolve_spec_dir(a.common.spec_dir));
+    options = make_options(spec, a.common);
+  } catch (const std::exception& e) {
+    std::cerr << "rotorcert report: " << e.what() << '\n';
+    return kExitUsage;
+  }
+
+  std::vector<certify::Target> targets;
+  for (const certify::Target& t : certify::builtin_targets())
+    if (a.impls.empty() || std::find(a.impls.begin(), a.impls.end(), t.info.name) != a.impls.end()) targets.push_back(t);
+  for (const std::string& name : a.impls)
+    if (std::none_of(targets.begin(), targets.end(), [&](const certify::Target& t) { return t.info.name == name; })) {
+      std::cerr << "rotorcert report: no built-in implementation named '" << name << "'\n";
+      return kExitUsage;
+    }
+  const std::size_t builtin_count = targets.size();
+
+  // Mutants: plugins of the build tree, each judged on the clauses it must break.
+  std::vector<MutantRun> mutants;
+  std::string mutants_note;
+  if (!a.no_mutants) {
+    if (!std::filesystem::is_directory(a.mutant_dir)) {
+      mutants_note = "mutant plugins not found in " + a.mutant_dir + " (build the whole tree to include them)";
+    } else {
+      for (const certify::json& entry : spec::read_json(ROTORCERT_MUTANTS_JSON)) {
+        MutantRun m{entry, SIZE_MAX, {}};
+        const std::string path = a.mutant_dir + "/rotorcert_mutant_" + entry.at("mutant").get<std::string>() + ".so";
+        try {
+          for (certify::Target t : certify::probe_plugin(path, options.limits))
+            if (t.info.scalar == entry.at("scalar")) {
+              t.clauses = entry.at("breaks").get<std::vector<std::string>>();
+              m.target = targets.size() - builtin_count;
+              targets.push_back(t);
+              break;
+            }
+          if (m.target == SIZE_MAX) m.error = "the plugin has no " + entry.at("scalar").get<std::string>() + " table";
+        } catch (const std::exception& e) {
+          m.error = e.what();
+        }
+        mutants.push_back(std::move(m));
+      }
+    }
+  }
+
+  const auto certs = certify::certify_targets(spec, targets, options);
+  std::vector<certify::json> cj;
+  for (std::size_t i = 0; i < builtin_count; ++i) cj.push_back(certify::certificate_json(spec, certs[i], options.levels));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  certify::json report =
+      certify::report_json(spec, "report", certify::options_json(options), run_json(seconds, command_line(), options.jobs), cj);
+  if (mutants_note.empty()) {
+    certify::json section = mutants_section(mutants, certs, builtin_count, a.mutant_dir);
+    if (section.at("killed") != section.at("total")) report["summary"]["exit_code"] = 1;
+    report["summary"]["mutants_killed"] = section.at("killed");
+    report["summary"]["mutants_total"] = section.at("total");
+    report["sections"]["mutants"] = std::move(section);
+  } else {
+    report["sections"]["mutants"] = {{"note", mutants_note}};
+  }
+
+  if (!a.common.quiet) {
+    for (const certify::json& c : cj) certify::print_certificate(std::cout, c, a.common.verbose);
+    if (mutants_note.empty())
+      std::cout << "mutants killed: " << report["summary"]["mutants_killed"] << " of " << report["summary"]["mutants_total"]
+                << '\n';
+    else
+      std::cout << "mutants: " << mutants_note << '\n';
+  }
+  try {
+    certify::write_report(a.common.out, report);
+  } catch (const std::exception& e) {
+    std::cerr << "rotorcert report: cannot write the report: " << e.what() << '\n';
+    return kExitUsage;
+  }
+  if (!a.common.quiet)
+    std::cout << "report: " << a.common.out << "/report.html (and report.json, report.md); results "
+              << (report["summary"]["as_expected"].get<bool>() ? "match" : "DO NOT match") << " expectations\n";
+  return report.at("summary").at("exit_code").get<int>();
+}
+
+}  // namespace
+
+Command add_report(CLI::App& parent) {
+  auto args = std::make_shared<Args>();
+  CLI::App* app = parent.add_subcommand(
+      "report", "The main job: certify every built-in implementation and the mutants, write the HTML/Markdown/JSON report");
+  app->add_option("--impl", args->impls, "Only this built-in implementation; repeatable");
+  app->add_option("--mutants", args->mutant_dir, "Directory of the mutant plugins")->capture_default_str();
+  app->add_flag("--no-mutants", args->no_mutants, "Leave the mutants out");
+  add_certify_options(*app, args->common);
+  return {app, [args] { return run(*args); }};
+}
+
 }  // namespace rotorcert::cli

@@ -1,1 +1,231 @@
-// in progress
+#include <rotorcert/certify/certify.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cfenv>
+#include <filesystem>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+#include <rotorcert/certify/platform.hpp>
+#include <rotorcert/registry.hpp>
+
+namespace rotorcert::certify {
+namespace {
+
+using engine::ClauseResult;
+using engine::Outcome;
+
+/// The table a target names, inside the child (a plugin is loaded there, and stays loaded until
+/// the child exits).
+const rc_impl& open_table(const Target& t) {
+  if (t.plugin_path.empty()) {
+    const rc_impl* table = impl::find_builtin(t.info.name, t.info.scalar == "float" ? RC_SCALAR_FLOAT32 : RC_SCALAR_FLOAT64);
+    if (table == nullptr) throw std::runtime_error("no built-in table " + t.info.name + " " + t.info.scalar);
+    return *table;
+  }
+  static std::unique_ptr<impl::Plugin> plugin;  // per child: one target per child
+  plugin = impl::Plugin::load(t.plugin_path);
+  if (t.plugin_index >= plugin->tables().size()) throw std::runtime_error("the plugin lost a table between two loads");
+  return *plugin->tables()[t.plugin_index];
+}
+
+std::string reproduce_command(const CertifyOptions& o, const Target& t, const std::string& clause) {
+  std::string s = o.reproduce_prefix + " certify ";
+  s += t.plugin_path.empty() ? "--impl " + t.info.name : "--plugin " + t.plugin_path;
+  s += " --scalar " + t.info.scalar + " --clause " + clause + " --seed " + std::to_string(o.cases.seed) + " --cases " +
+       std::to_string(o.cases.cases_per_family) + " --verbose --out rotorcert-" + clause;
+  return s;
+}
+
+/// What a child does for one clause: run, and on FAIL try the conventions.
+std::string run_clause_in_child(const spec::Spec& spec, const Target& target, const std::string& clause,
+                                const CertifyOptions& options, bool one_at_a_time, ChildChannel& channel) {
+  const rc_impl& table = open_table(target);
+  // The implementation runs in the environment its loading left (FTZ/DAZ of -ffast-math
+  // included); the reference and the judging run in the default one.
+  std::fenv_t loaded;
+  std::fegetenv(&loaded);
+  const json environment = fp_environment_json();
+  engine::set_call_environment(loaded);
+  std::fesetenv(FE_DFL_ENV);
+  const ref::Format f = engine::format_of(table);
+  engine::RunHooks hooks;
+  hooks.one_at_a_time = one_at_a_time;
+  hooks.before_call = [&](const engine::AbiOp& op, const std::vector<const engine::Case*>& cases) {
+    if (cases.size() == 1) channel.progress(op.name + " [" + cases[0]->label + "] " + engine::describe_inputs(op, *cases[0], f));
+    else channel.progress(op.name + " on a batch of " + std::to_string(cases.size()) + " cases");
+  };
+  ClauseResult r = engine::run_clause(table, spec, clause, options.cases, hooks);
+  if (r.outcome == Outcome::fail && options.detect_conventions) {
+    channel.progress("convention detection for " + clause);
+    r.conventions = engine::detect_conventions(table, spec, clause, options.cases);
+  }
+  return json{{"result", to_json(r, true)}, {"fp_environment", environment}}.dump();
+}
+
+void show_progress(const CertifyOptions& o, std::size_t done, std::size_t total, const std::string& what) {
+  if (!o.progress) return;
+  std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", done, total, what.c_str());
+  if (done == total) std::fputs("\r\033[K", stderr);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+std::vector<Target> builtin_targets() {
+  std::vector<Target> all;
+  for (const rc_impl* t : impl::builtin_tables()) all.push_back({table_info(*t), {}, 0, {}});
+  return all;
+}
+
+std::vector<Target> probe_plugin(const std::string& given_path, const ChildLimits& limits) {
+  if (!std::filesystem::exists(given_path)) throw std::runtime_error("no such file");
+  // Absolute, so that reproduce commands work from any directory.
+  const std::string path = std::filesystem::absolute(given_path).lexically_normal().string();
+  ChildPool pool(1, limits);
+  pool.submit(0, [&](ChildChannel& channel) {
+    channel.progress("loading " + path);
+    const auto plugin = impl::Plugin::load(path);
+    json tables = json::array();
+    for (const rc_impl* t : plugin->tables()) {
+      if (const std::string problem = impl::validate_table(*t); !problem.empty())
+        throw std::runtime_error("invalid table: " + problem);
+      tables.push_back(to_json(table_info(*t, "plugin", path)));
+    }
+    return tables.dump();
+  });
+  const auto [id, out] = pool.wait_any();
+  (void)id;
+  if (out.kind == ChildOutcome::Kind::timed_out) throw std::runtime_error("loading the plugin hung: " + out.message);
+  if (out.kind == ChildOutcome::Kind::crashed) throw std::runtime_error("cannot be certified: " + out.message);
+  std::vector<Target> targets;
+  std::uint32_t index = 0;
+  for (const json& t : json::parse(out.result)) targets.push_back({table_info_from_json(t), path, index++, {}});
+  if (targets.empty()) throw std::runtime_error("the plugin offers no table for ABI version " + std::to_string(RC_ABI_VERSION));
+  return targets;
+}
+
+std::vector<std::string> clauses_to_certify(const spec::Spec& spec, const std::vector<std::string>& levels,
+                                            const std::vector<std::string>& only) {
+  std::vector<std::string> ids;
+  for (const spec::Clause& c : spec.clauses) {
+    if (c.level == "Meta" || std::find(levels.begin(), levels.end(), c.level) == levels.end()) continue;
+    if (!only.empty() && std::find(only.begin(), only.end(), c.id) == only.end()) continue;
+    ids.push_back(c.id);
+  }
+  return ids;
+}
+
+std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vector<Target>& targets,
+                                         const CertifyOptions& options) {
+  const std::vector<std::string> all_clauses = clauses_to_certify(spec, options.levels, options.clauses);
+  std::vector<Certificate> certs(targets.size());
+  struct Job {
+    std::size_t target, slot;
+    std::string clause;
+    bool pinpoint = false;        // second run, one case at a time, to find the crashing input
+    ChildOutcome first;           // the first run's outcome, for a pinpoint run
+  };
+  std::vector<Job> jobs;
+  ChildPool pool(options.jobs, options.limits);
+  std::size_t total = 0, done = 0;
+
+  auto submit = [&](Job job) {
+    const std::size_t id = jobs.size();
+    jobs.push_back(job);
+    const Target& target = targets[job.target];
+    pool.submit(id, [&spec, &options, target, job](ChildChannel& channel) {
+      return run_clause_in_child(spec, target, job.clause, options, job.pinpoint, channel);
+    });
+  };
+
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    Certificate& c = certs[t];
+    c.table = targets[t].info;
+    if (targets[t].plugin_path.empty()) c.expected_failures = expected_failures(c.table.name, c.table.scalar);
+    const std::vector<std::string>& clauses = targets[t].clauses.empty() ? all_clauses : targets[t].clauses;
+    for (const std::string& id : clauses) {
+      const spec::Clause* cl = spec.find_clause(id);
+      ClauseResult r;
+      r.clause = id;
+      r.level = cl->level;
+      r.tolerance = cl->tolerance;
+      const bool claimed =
+          std::find(c.table.claimed_clauses.begin(), c.table.claimed_clauses.end(), id) != c.table.claimed_clauses.end();
+      const bool run = claimed || options.run_unclaimed || !targets[t].clauses.empty();
+      if (!run) {
+        r.outcome = Outcome::not_supported;
+        r.note = "not claimed by the implementation";
+      }
+      c.reproduce[id] = reproduce_command(options, targets[t], id);
+      c.clauses.push_back(r);
+      if (run) {
+        submit({t, c.clauses.size() - 1, id, false, {}});
+        ++total;
+      }
+    }
+  }
+
+  while (pool.pending() > 0) {
+    auto [id, out] = pool.wait_any();
+    const Job job = jobs[id];
+    Certificate& c = certs[job.target];
+    ClauseResult& slot = c.clauses[job.slot];
+    if (out.kind == ChildOutcome::Kind::finished) {
+      const json child = json::parse(out.result);
+      ClauseResult r = clause_result_from_json(child.at("result"));
+      if (c.fp_environment.is_null()) c.fp_environment = child.at("fp_environment");
+      if (job.pinpoint) {
+        // The crash or hang did not come back one case at a time: report the first run's.
+        r = slot;
+        r.note += "; run again one case at a time, it did not recur (the fault depends on the batch)";
+      }
+      slot = std::move(r);
+    } else {
+      const bool timeout = out.kind == ChildOutcome::Kind::timed_out;
+      const ChildOutcome& first = job.pinpoint ? job.first : out;
+      ClauseResult r = slot;
+      r.outcome = timeout || first.kind == ChildOutcome::Kind::timed_out ? Outcome::timeout : Outcome::crash;
+      r.note = first.message + (r.outcome == Outcome::crash && pool.limits().memory_mb
+                                    ? " (the process ran with an address-space limit of " +
+                                          std::to_string(pool.limits().memory_mb) + " MiB)"
+                                    : "");
+      r.worst_error = NAN;
+      r.worst_input = out.last_progress;
+      r.worst_detail = (timeout ? "hung while working on: " : "crashed while working on: ") + out.last_progress;
+      const auto space = out.last_progress.find(' ');
+      r.worst_op = out.last_progress.substr(0, space);
+      if (const auto lb = out.last_progress.find('['), rb = out.last_progress.find("] "); lb != std::string::npos && rb != std::string::npos) {
+        r.worst_label = out.last_progress.substr(lb + 1, rb - lb - 1);
+        r.worst_input = out.last_progress.substr(rb + 2);
+      }
+      slot = r;
+      if (!job.pinpoint) {
+        // Run the clause again one case at a time, so the report names the input.
+        Job again = job;
+        again.pinpoint = true;
+        again.first = out;
+        submit(again);
+        ++total;
+      }
+    }
+    ++done;
+    show_progress(options, done, total, c.table.name + " " + c.table.scalar + " " + job.clause);
+  }
+  return certs;
+}
+
+json options_json(const CertifyOptions& o) {
+  return {{"seed", o.cases.seed},
+          {"cases_per_family", o.cases.cases_per_family},
+          {"levels", o.levels},
+          {"clauses", o.clauses},
+          {"timeout_s", o.limits.timeout_s},
+          {"memory_mb", o.limits.memory_mb},
+          {"isolation", "one child process per clause"}};
+}
+
+}  // namespace rotorcert::certify

@@ -304,12 +304,18 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       return labelled(c, "t outside [0, 1]");
     });
   } else if (clause == "SLERP-5") {
-    for (int p = 0; p < std::max(1, n / 9); ++p) {
+    // Half the pairs obtuse (a.b < 0), so the hemisphere rule is always exercised.
+    for (int p = 0; p < std::max(2, n / 9); ++p) {
       Case base = random();
+      Real d(0);
+      for (int i = 0; i < 4; ++i) d += base.inputs[0][i] * base.inputs[1][i];
+      const bool obtuse = p % 2 == 1;
+      if ((d < 0) != obtuse)
+        for (Real& x : base.inputs[1]) x = -x;
       for (int j = 0; j <= 8; ++j) {
         Case c = base;
         c.inputs[2] = {Real(j) / Real(8)};
-        cases.push_back(labelled(c, "t = j/8 on one pair"));
+        cases.push_back(labelled(c, obtuse ? "t = j/8 on one obtuse pair" : "t = j/8 on one pair"));
       }
     }
   } else if (clause == "SKIN-3") {

@@ -210,6 +210,16 @@ std::string describe_inputs(const AbiOp& op, const Case& c, ref::Format f) {
   return s;
 }
 
+namespace {
+bool call_environment_set = false;
+std::fenv_t call_environment;
+}  // namespace
+
+void set_call_environment(const std::fenv_t& env) {
+  call_environment = env;
+  call_environment_set = true;
+}
+
 std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases,
                               std::size_t k) {
   std::vector<Observed> result(cases.size());
@@ -217,7 +227,13 @@ std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::
     using S = decltype(tag);
     Buffers<S> buf;
     buf.fill(op, cases, k);
+    std::fenv_t judge_environment;
+    if (call_environment_set) {
+      std::fegetenv(&judge_environment);
+      std::fesetenv(&call_environment);
+    }
     const int rc = call(table, op.name, cases.size(), k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
+    if (call_environment_set) std::fesetenv(&judge_environment);
     for (std::size_t i = 0; i < cases.size(); ++i) {
       result[i].call_rc = rc;
       result[i].status = buf.status[i];
@@ -375,22 +391,33 @@ std::vector<std::string> detect_conventions(const rc_impl& table, const spec::Sp
   const spec::Clause* cl = spec.find_clause(clause_id);
   if (cl == nullptr) return found;
   const auto checks = supported_checks(table, spec, clause_id, options);
-  for (const Convention& convention : conventions()) {
-    bool applies = false, explains = true;
+  auto fails = [&](const Check& check, const Convention* convention) {
     RunHooks hooks;
-    hooks.convention = &convention;
-    for (const Check& check : checks) {
-      // The round trip of EXP-2 is convention-free; an op the hypothesis does not touch would
-      // fail the same way, so it is not evidence either way.
-      if (check.log_exp_round_trip || !convention.applies(*find_abi_op(check.op))) continue;
-      applies = true;
-      run_check(table, class_of(spec, *cl, check), check, hooks,
-                [&](const CaseVerdict& v, const AbiOp&, const Case&) {
-                  if (v.verdict == ref::Verdict::fail) explains = false;
-                });
-      if (!explains) break;
+    hooks.convention = convention;
+    bool failed = false;
+    run_check(table, class_of(spec, *cl, check), check, hooks, [&](const CaseVerdict& v, const AbiOp&, const Case&) {
+      if (v.verdict == ref::Verdict::fail) failed = true;
+    });
+    return failed;
+  };
+  std::vector<bool> failed_as_specified;
+  for (const Check& check : checks) failed_as_specified.push_back(fails(check, nullptr));
+  // A convention explains the clause when every check that failed as specified is one it
+  // applies to and passes under it, and every other check it applies to still passes: it must
+  // account for the failure and contradict nothing. (The EXP-2 round trip is convention-free.)
+  for (const Convention& convention : conventions()) {
+    bool explains = true, covers = false;
+    for (std::size_t i = 0; i < checks.size() && explains; ++i) {
+      const Check& check = checks[i];
+      const bool applies = !check.log_exp_round_trip && convention.applies(*find_abi_op(check.op));
+      if (!applies) {
+        explains = !failed_as_specified[i];
+        continue;
+      }
+      if (fails(check, &convention)) explains = false;
+      else covers = covers || failed_as_specified[i];
     }
-    if (applies && explains) found.push_back(convention.id);
+    if (explains && covers) found.push_back(convention.id);
   }
   return found;
 }

@@ -52,6 +52,9 @@ struct Certificate {
   std::map<std::string, std::string> expected_failures;  // clause -> why (known defects)
   std::map<std::string, std::string> reproduce;    // clause -> one-line command
   std::string error;  // set when the table could not be certified at all
+  /// The floating-point environment observed in the child processes after loading the
+  /// implementation (platform.hpp); null when no child got that far.
+  json fp_environment;
 };
 
 /// Known defects of a built-in implementation: impls/<name>/expected_failures.json, entries of

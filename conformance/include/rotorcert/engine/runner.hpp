@@ -10,6 +10,7 @@
 // (Running an implementation in an isolated child process is the certify tool's business.)
 #pragma once
 
+#include <cfenv>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -79,6 +80,12 @@ ref::Format format_of(const rc_impl& table);
 /// Element values as text: hexfloat of the format ("0x1.8p+0") and decimal (12 digits).
 std::string hexfloat(const Real& x, ref::Format f);
 std::string describe_inputs(const AbiOp& op, const Case& c, ref::Format f);
+
+/// The floating-point environment implementation calls run in (NUM-1: an implementation is tested
+/// as it is, FTZ/DAZ included), while the judging around them runs in the default environment.
+/// The certify tool's child sets it to what it found after loading the implementation, then resets
+/// its own environment to the default. Unset: calls run in whatever environment is current.
+void set_call_environment(const std::fenv_t& env);
 
 /// Calls `op` once on all `cases` (they share one k) and reads back status bytes and outputs.
 std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases,

@@ -1,0 +1,42 @@
+// Options shared by `rotorcert certify` and `rotorcert report`, and the steps both take after
+// certifying: print, write the report atomically, choose the exit code.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include <rotorcert/certify/certify.hpp>
+
+namespace rotorcert::cli {
+
+struct CertifyCli {
+  std::uint64_t seed = 1;
+  int cases = 64;
+  std::vector<std::string> levels;  // empty: every implementation level
+  std::vector<std::string> clauses;
+  double timeout_s = 30;
+  std::size_t memory_mb = 2048;
+  int jobs = 0;  // 0: one per core
+  std::string out;
+  std::optional<std::string> spec_dir;
+  bool verbose = false, quiet = false;
+};
+
+/// Adds the shared options to a subcommand.
+void add_certify_options(CLI::App& app, CertifyCli& o);
+
+/// Builds CertifyOptions from the parsed options; throws CLI-style usage errors as
+/// std::invalid_argument (unknown level or clause).
+certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o);
+
+/// The report's run object: date, host, duration, command line.
+certify::json run_json(double seconds, const std::string& command, int jobs);
+
+/// The command line as typed, for the report.
+std::string command_line();
+
+}  // namespace rotorcert::cli
