@@ -1,0 +1,110 @@
+#include <rotorcert/vectors/flags.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace rotorcert::vectors {
+namespace {
+
+// The vocabulary, in the order flags are listed on a vector.
+const std::vector<std::pair<std::string, std::string>>& vocabulary() {
+  static const std::vector<std::pair<std::string, std::string>> v = {
+      {"WorkedExample", "The inputs of a worked example of the spec (spec/examples.json), rounded to the format."},
+      {"Random", "Ordinary random inputs: uniform rotations, vectors of length 1e-3..1e3, t in [0, 1], positive weights."},
+      {"RoundTrip", "exp(log q) = q through the implementation (EXP-2): call log, feed its output to exp."},
+      {"Identity", "Identity rotations (and the zero log vector, the identity matrix): results are defined exactly (EDGE-1)."},
+      {"SmallAngle", "Rotation angles or angles between the inputs of 1e-9..1e-3 rad: cancellation in acos / sin(x)/x (EDGE-2)."},
+      {"AngleNear2Pi", "Rotation angles in (2 pi - 1, 2 pi), i.e. w < -cos(1/2): the branch of the angle (AXANG-1)."},
+      {"NearHalfTurn", "Rotation matrices of angles within 1e-3 of pi: trace-based extraction loses accuracy (MAT-2)."},
+      {"HemisphereTie", "Two quaternions whose dot product is exactly 0: the tie of the hemisphere rule (EDGE-3)."},
+      {"Antipodal", "b = -a exactly: the same rotation, the interpolation must be constant (EDGE-3)."},
+      {"Negated", "Every quaternion input negated: the double cover, results must describe the same rotation (EDGE-4)."},
+      {"Endpoint", "t = 0 or t = 1: interpolation must return the end rotations (SLERP-3)."},
+      {"TOutsideUnitInterval", "t in [-1, 0) or (1, 2]: extrapolation along the same great arc (SLERP-4)."},
+      {"TSweep", "t = j/8 for j = 0..8 on one pair of rotations: constant angular velocity (SLERP-5)."},
+      {"ObtusePair", "a.b < 0: the hemisphere rule must interpolate from a to -b, the shorter arc (SLERP-2, SLERP-5)."},
+      {"NonUnit", "Quaternion inputs scaled by a power of two away from unit length (NORM-1, EDGE-5)."},
+      {"HugeScale", "Non-unit inputs so large that |q|^2 overflows the format: needs scaled normalisation (EDGE-5)."},
+      {"TinyScale", "Non-unit inputs so small that |q|^2 underflows the format: needs scaled normalisation (EDGE-5)."},
+      {"Subnormal", "Components that are subnormal in the format: a naive |q|^2 underflows to 0 (EDGE-8)."},
+      {"NegativeZero", "Components equal to -0."},
+      {"NegativeReal", "Quaternions with w < 0 and a zero vector part, e.g. -1: the branch of the log (LOG-2)."},
+      {"ZeroQuaternion", "A quaternion input equal to 0: outside the domain, DOMAIN_ERROR with NaN outputs (EDGE-6)."},
+      {"ZeroRealPart", "A dual quaternion whose real part is 0: outside the domain (EDGE-6)."},
+      {"NaN", "A NaN among the inputs: DOMAIN_ERROR with NaN outputs (EDGE-7, EDGE-9)."},
+      {"Infinity", "An infinity among the inputs: DOMAIN_ERROR with NaN outputs (EDGE-7, EDGE-9)."},
+      {"Reflection", "A matrix with det < 0: no rotation is near it, DOMAIN_ERROR (MAT-3)."},
+      {"NonOrthogonalMatrix", "A rotation matrix perturbed by 1e-6..1e-2: the nearest rotation is returned (MAT-3)."},
+      {"DegenerateWeights", "A weight set outside the domain of blending (EDGE-9): see the specific flag."},
+      {"NegativeWeight", "A negative weight (EDGE-9)."},
+      {"ZeroWeights", "Every weight 0 (EDGE-9)."},
+      {"NoInfluences", "k = 0 influences (EDGE-9)."},
+      {"ZeroFirstWeight", "The first weight is 0: the pivot of the hemisphere rule is the first influence of positive weight."},
+      {"SingleInfluence", "One influence of weight 1: skinning must reproduce the rigid motion (SKIN-3)."},
+      {"EqualInfluences", "Several influences with the same rotation and translation: skinning must reproduce it (SKIN-3)."},
+  };
+  return v;
+}
+
+bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p, 0) == 0; }
+
+}  // namespace
+
+std::vector<std::string> flags_for_label(const std::string& label) {
+  std::vector<std::string> f;
+  // Labels of cases.cpp; "... in NAME" names the input array.
+  if (starts_with(label, "example ")) f = {"WorkedExample"};
+  else if (label == "random") f = {"Random"};
+  else if (label == "identity") f = {"Identity"};
+  else if (label == "angle 1e-9 .. 1e-3") f = {"SmallAngle"};
+  else if (label == "angle in (2pi - 1, 2pi)") f = {"AngleNear2Pi"};
+  else if (label == "near half turn") f = {"NearHalfTurn"};
+  else if (label == "dot exactly 0") f = {"HemisphereTie"};
+  else if (label == "exact antipode") f = {"Antipodal"};
+  else if (label == "negated quaternions") f = {"Negated"};
+  else if (label == "t = 0" || label == "t = 1") f = {"Endpoint"};
+  else if (label == "t outside [0, 1]") f = {"TOutsideUnitInterval"};
+  else if (label == "t = j/8 on one pair") f = {"TSweep"};
+  else if (label == "t = j/8 on one obtuse pair") f = {"TSweep", "ObtusePair"};
+  else if (label == "non-unit scale 2^-8..2^8") f = {"NonUnit"};
+  else if (starts_with(label, "non-unit scale 2^")) {
+    // EDGE-5: exponents within +-10 are ordinary, the others push |q|^2 out of the format.
+    const int e = std::stoi(label.substr(std::string("non-unit scale 2^").size()));
+    f = {"NonUnit"};
+    if (e > 10) f.push_back("HugeScale");
+    if (e < -10) f.push_back("TinyScale");
+  } else if (label == "subnormal and -0 components") f = {"Subnormal", "NegativeZero"};
+  else if (label == "negative real quaternion") f = {"NegativeReal"};
+  else if (label == "-1 with -0 components") f = {"NegativeZero", "NegativeReal"};
+  else if (starts_with(label, "zero quaternion in ")) f = {"ZeroQuaternion"};
+  else if (starts_with(label, "quaternion of +-0 in ")) f = {"NegativeZero", "ZeroQuaternion"};
+  else if (starts_with(label, "zero real part in ")) f = {"ZeroRealPart"};
+  else if (starts_with(label, "NaN in ")) f = {"NaN"};
+  else if (starts_with(label, "+Inf in ") || starts_with(label, "-Inf in ")) f = {"Infinity"};
+  else if (label == "reflection (det < 0)") f = {"Reflection"};
+  else if (label == "perturbed rotation") f = {"NonOrthogonalMatrix"};
+  else if (label == "negative weight") f = {"DegenerateWeights", "NegativeWeight"};
+  else if (label == "NaN weight") f = {"NaN", "DegenerateWeights"};
+  else if (label == "+Inf weight") f = {"Infinity", "DegenerateWeights"};
+  else if (label == "all weights zero") f = {"DegenerateWeights", "ZeroWeights"};
+  else if (label == "no influences (k = 0)") f = {"DegenerateWeights", "NoInfluences"};
+  else if (starts_with(label, "first weight 0")) f = {"ZeroFirstWeight"};
+  else if (label == "single influence") f = {"SingleInfluence"};
+  else if (label == "equal influences") f = {"EqualInfluences"};
+  else throw std::logic_error("no test-vector flags for the case label \"" + label + "\" (conformance/src/vectors/flags.cpp)");
+  // Vocabulary order, whatever order the branches above list them in.
+  auto rank = [](const std::string& name) {
+    const auto& v = vocabulary();
+    return std::find_if(v.begin(), v.end(), [&](const auto& p) { return p.first == name; }) - v.begin();
+  };
+  std::sort(f.begin(), f.end(), [&](const std::string& a, const std::string& b) { return rank(a) < rank(b); });
+  return f;
+}
+
+const std::map<std::string, std::string>& flag_docs() {
+  static const std::map<std::string, std::string> m(vocabulary().begin(), vocabulary().end());
+  return m;
+}
+
+}  // namespace rotorcert::vectors
