@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <ctime>
 #include <fstream>
+#include <iostream>
 #include <stdexcept>
 #include <thread>
 
@@ -48,6 +49,18 @@ certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o
   opt.jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   opt.progress = !o.quiet && ::isatty(STDERR_FILENO);
   return opt;
+}
+
+bool load_spec_and_options(const char* command, const CertifyCli& o, spec::Spec& spec,
+                           certify::CertifyOptions& options) {
+  try {
+    spec = spec::load_spec(spec::resolve_spec_dir(o.spec_dir));
+    options = make_options(spec, o);
+    return true;
+  } catch (const std::exception& e) {  // SpecError, or a bad --level / --clause
+    std::cerr << "rotorcert " << command << ": " << e.what() << '\n';
+    return false;
+  }
 }
 
 std::string command_line() {

@@ -33,6 +33,11 @@ void add_certify_options(CLI::App& app, CertifyCli& o);
 /// std::invalid_argument (unknown level or clause).
 certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o);
 
+/// Loads the spec and builds the options; on a bad spec or option prints "rotorcert CMD: why" and
+/// returns false (the caller exits with kExitUsage).
+bool load_spec_and_options(const char* command, const CertifyCli& o, spec::Spec& spec,
+                           certify::CertifyOptions& options);
+
 /// The report's run object: date, host, duration, command line.
 certify::json run_json(double seconds, const std::string& command, int jobs);
 

@@ -24,16 +24,7 @@ int run(const Args& a) {
   const auto started = std::chrono::steady_clock::now();
   spec::Spec spec;
   certify::CertifyOptions options;
-  try {
-    spec = spec::load_spec(spec::resolve_spec_dir(a.common.spec_dir));
-    options = make_options(spec, a.common);
-  } catch (const spec::SpecError& e) {
-    std::cerr << "rotorcert certify: " << e.what() << '\n';
-    return kExitUsage;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "rotorcert certify: " << e.what() << '\n';
-    return kExitUsage;
-  }
+  if (!load_spec_and_options("certify", a.common, spec, options)) return kExitUsage;
 
   std::vector<certify::Target> targets;
   if (!a.plugin.empty()) {

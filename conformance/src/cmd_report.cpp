@@ -71,13 +71,7 @@ int run(const Args& a) {
   const auto started = std::chrono::steady_clock::now();
   spec::Spec spec;
   certify::CertifyOptions options;
-  try {
-    spec = spec::load_spec(spec::resolve_spec_dir(a.common.spec_dir));
-    options = make_options(spec, a.common);
-  } catch (const std::exception& e) {
-    std::cerr << "rotorcert report: " << e.what() << '\n';
-    return kExitUsage;
-  }
+  if (!load_spec_and_options("report", a.common, spec, options)) return kExitUsage;
 
   std::vector<certify::Target> targets;
   for (const certify::Target& t : certify::builtin_targets())

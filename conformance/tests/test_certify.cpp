@@ -20,6 +20,7 @@
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/registry.hpp>
 #include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/shell.hpp>
 
 namespace {
 
@@ -27,10 +28,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace rotorcert;
 
-struct ToolRun {
-  int exit_code;
-  std::string output;
-};
+using ToolRun = ::rotorcert::testing::ShellRun;
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("rotorcert_certify_test_" + std::to_string(::getpid())) / name;
@@ -39,15 +37,7 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-ToolRun rotorcert_tool(const std::string& args) {
-  const fs::path out = scratch("output.txt");
-  const std::string command = std::string("'") + ROTORCERT_BINARY + "' " + args + " > '" + out.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(out);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-}
+ToolRun rotorcert_tool(const std::string& args) { return ::rotorcert::testing::run_rotorcert(args); }
 
 json read(const fs::path& file) {
   std::ifstream in(file);

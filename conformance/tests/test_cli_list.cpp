@@ -13,26 +13,14 @@
 #include <gtest/gtest.h>
 
 #include <rotorcert/registry.hpp>
+#include <rotorcert/testing/shell.hpp>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int exit_code;
-  std::string output;
-};
-
-ToolRun rotorcert(const std::string& args) {
-  const fs::path out = fs::temp_directory_path() / ("rotorcert_list_" + std::to_string(::getpid()) + ".txt");
-  const std::string command = std::string("'") + ROTORCERT_BINARY + "' " + args + " > '" + out.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(out);
-  std::stringstream text;
-  text << in.rdbuf();
-  fs::remove(out);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-}
+using ToolRun = ::rotorcert::testing::ShellRun;
+ToolRun rotorcert(const std::string& args) { return ::rotorcert::testing::run_rotorcert(args); }
 
 TEST(CliList, ShowsEveryBuiltinWithScalarLevelsAndSimdTargets) {
   const ToolRun r = rotorcert("list");

@@ -18,6 +18,7 @@
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/registry.hpp>
 #include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/shell.hpp>
 #include <rotorcert/vectors/check.hpp>
 #include <rotorcert/vectors/error.hpp>
 #include <rotorcert/vectors/flags.hpp>
@@ -52,23 +53,10 @@ fs::path scratch(const std::string& name) {
   return d;
 }
 
-struct ToolRun {
-  int exit_code;
-  std::string output;
-};
+using ToolRun = ::rotorcert::testing::ShellRun;
+ToolRun shell(const std::string& command_line) { return ::rotorcert::testing::run_shell(command_line); }
 
-ToolRun shell(const std::string& command_line) {
-  const fs::path out = fs::temp_directory_path() / ("rotorcert_vectors_out_" + std::to_string(::getpid()) + ".txt");
-  const std::string command = command_line + " > '" + out.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(out);
-  std::stringstream text;
-  text << in.rdbuf();
-  fs::remove(out);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-}
-
-ToolRun rotorcert(const std::string& args) { return shell(std::string("'") + ROTORCERT_BINARY + "' " + args); }
+ToolRun rotorcert(const std::string& args) { return ::rotorcert::testing::run_rotorcert(args); }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
