@@ -454,6 +454,18 @@ TEST_F(CliFixture, MalformedResultsExitWith2NamingTheJsonPath) {
   }
 }
 
+TEST_F(CliFixture, AResultsFileThatIsNotUsableJsonExitsWith2NamingTheFile) {
+  // A number beyond binary64 makes nlohmann::json throw out_of_range, not parse_error: found by
+  // fuzz_results_file, it used to escape as "internal error".
+  for (const std::string text : {"7e824", "{\"results\": [1e999]}", "{\"a\":", ""}) {
+    write(dir / "bad.json", text);
+    const ToolRun t = rotorcert("vectors check '" + (dir / "bad.json").string() + "'");
+    EXPECT_EQ(t.exit_code, 2) << text << "\n" << t.output;
+    EXPECT_NE(t.output.find("bad.json"), std::string::npos) << text << "\n" << t.output;
+    EXPECT_EQ(t.output.find("internal error"), std::string::npos) << text << "\n" << t.output;
+  }
+}
+
 TEST_F(CliFixture, AlteredVectorsOrAnotherSpecVersionExitWith2) {
   const fs::path file = dir / "v" / "SLERP-1_slerp_binary32.json";
   const std::string original = slurp(file);

@@ -69,7 +69,7 @@ json read_json_file(const std::filesystem::path& file) {
   text << in.rdbuf();
   try {
     return json::parse(text.str());
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers beyond binary64
     throw VectorsError(file, "", std::string("not valid JSON: ") + e.what());
   }
 }
