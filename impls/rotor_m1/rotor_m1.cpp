@@ -16,25 +16,28 @@ using rotorcert::rotor::Rotor3;
 
 struct Method1 : rotorcert::rotor::PhiReadout {
   /// theta/2 = atan2(|v|, w), u = v/|v| (AXANG-1, scale-free: q need not be unit), then
-  /// exp(-I u theta/2) = cos(theta/2) - I u sin(theta/2). Computed on q rescaled by a power of
-  /// two so that subnormal or huge components keep full accuracy. v = 0 gives +-1 exactly
-  /// (exp(0) = 1; the angle 2 pi for w < 0), w = 0 the exact half turn (cos(pi/2) rounded is
-  /// not 0: in binary32 it is -4.4e-8, which would move the hemisphere test of a tie).
+  /// exp(-I u theta/2) = cos(theta/2) - I u sin(theta/2). q is first rescaled by a power of two
+  /// so that subnormal or huge components keep full accuracy; |v| and u then come from v
+  /// rescaled again by its own power of two (norm3, unit_vector): a subnormal v beside w = -1
+  /// keeps its axis (EDGE-8). For w < 0 the angle is taken as pi - atan2(|v|, -w), through
+  /// sin(pi - x) = sin x and cos(pi - x) = -cos x: sin of the rounded pi is -8.7e-8 in binary32,
+  /// which would flip the axis of a rotation near 2 pi. v = 0 gives +-1 exactly (exp(0) = 1; the
+  /// angle 2 pi for w < 0), w = 0 the exact half turn (cos(pi/2) rounded is not 0: in binary32
+  /// it is -4.4e-8, which would move the hemisphere test of a tie).
   template <class S>
   static Rotor3<S> in(const Quat<S>& q) {
     const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
-    const int e = rotorcert::rotor::scale_exponent(m);
-    const S x = std::scalbn(q[0], -e), y = std::scalbn(q[1], -e), z = std::scalbn(q[2], -e), w = std::scalbn(q[3], -e);
-    const S n = std::sqrt(x * x + y * y + z * z);
-    if (n == 0) return {w > 0 ? S(1) : S(-1), S(0), S(0), S(0)};
+    const Quat<S> r = rotorcert::rotor::rescaled(q, -rotorcert::rotor::scale_exponent(m));
+    const S n = rotorcert::rotor::norm3(r[0], r[1], r[2]);
+    if (n == 0) return {r[3] > 0 ? S(1) : S(-1), S(0), S(0), S(0)};
     S c = 0, s = 1;
-    if (w != 0) {
-      const S half = std::atan2(n, w);
-      c = std::cos(half);
+    if (r[3] != 0) {
+      const S half = std::atan2(n, std::abs(r[3]));
+      c = std::copysign(std::cos(half), r[3]);
       s = std::sin(half);
     }
-    const S k = s / n;
-    return {c, -k * x, -k * y, -k * z};
+    const rotorcert::impl::Vec3<S> u = rotorcert::rotor::unit_vector(rotorcert::impl::Vec3<S>{r[0], r[1], r[2]});
+    return {c, -s * u[0], -s * u[1], -s * u[2]};
   }
   /// |q| R (COMPOSE-1 and INV-1 keep the scale of their inputs).
   template <class S>

@@ -423,6 +423,19 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
     const int extreme = f32 ? 100 : 900;  // |q|^2 overflows / underflows the format
     repeat([&](int i) {
       Case c = random(2);
+      if (op == "compose" && i % 4 == 3) {
+        // Unbalanced factors: a's largest component just below the overflow threshold (so |a|
+        // itself overflows), b scaled down by as much, the product of order 1. A compose that
+        // forms |a| unscaled returns Inf * 0 = NaN (fuzz finding rotor_m1-compose-norm-overflow).
+        const int top = f32 ? 127 : 1023;
+        Real big(0);
+        for (int j = 0; j < 4; ++j) big = std::max(big, Real(abs(c.inputs[0][j])));
+        const Real sa = Real(std::ldexp(g.uniform(1.9, 1.99), top)) / big;
+        const Real sb(std::ldexp(g.uniform(1.0, 2.0), -top));
+        for (Real& x : c.inputs[0]) x = g.round(x * sa);
+        for (Real& x : c.inputs[1]) x = g.round(x * sb);
+        return labelled(c, "unbalanced factors: |a| at the overflow threshold, b scaled by 2^-" + std::to_string(top));
+      }
       // COMPOSE-1 is defined on the unnormalised inputs (an EDGE-5 exception): its exact product
       // must stay representable, so each factor gets half the extreme exponent.
       const int far = op == "compose" ? extreme / 2 : extreme;
@@ -468,6 +481,13 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
           const int m = g.integer(0, 7);
           c.inputs[a][j] = (j + i) % 4 == 0 ? Real(-0.0) : Real(std::ldexp(double(m + 1), lowest + g.integer(0, 10)));
         }
+      if (i % 4 == 3) {
+        // A subnormal vector part beside a normal scalar part of either sign: a rotation within a
+        // few ulp of +-1, whose axis B/|B| must still be accurate (fuzz finding
+        // rotor-log-subnormal-vector-part-near-minus-1).
+        for (std::size_t a : arrays_with_stride(op, 4)) c.inputs[a][3] = Real((i / 4) % 2 ? 1.0 : -1.0);
+        return labelled(c, "subnormal vector part, scalar part +-1");
+      }
       return labelled(c, "subnormal and -0 components");
     });
   } else if (clause == "EDGE-9") {

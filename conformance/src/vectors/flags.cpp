@@ -27,7 +27,9 @@ const std::vector<std::pair<std::string, std::string>>& vocabulary() {
       {"NonUnit", "Quaternion inputs scaled by a power of two away from unit length (NORM-1, EDGE-5)."},
       {"HugeScale", "Non-unit inputs so large that |q|^2 overflows the format: needs scaled normalisation (EDGE-5)."},
       {"TinyScale", "Non-unit inputs so small that |q|^2 underflows the format: needs scaled normalisation (EDGE-5)."},
+      {"UnbalancedScale", "Factors at opposite ends of the format: |a| overflows it, b is scaled down as far, the product is of order 1 (COMPOSE-1, EDGE-5)."},
       {"Subnormal", "Components that are subnormal in the format: a naive |q|^2 underflows to 0 (EDGE-8)."},
+      {"SubnormalAxis", "A subnormal vector part beside w = +-1: the axis v/|v| must come from a rescaled v (EDGE-8, LOG-1)."},
       {"NegativeZero", "Components equal to -0."},
       {"NegativeReal", "Quaternions with w < 0 and a zero vector part, e.g. -1: the branch of the log (LOG-2)."},
       {"ZeroQuaternion", "A quaternion input equal to 0: outside the domain, DOMAIN_ERROR with NaN outputs (EDGE-6)."},
@@ -74,7 +76,9 @@ std::vector<std::string> flags_for_label(const std::string& label) {
     f = {"NonUnit"};
     if (e > 10) f.push_back("HugeScale");
     if (e < -10) f.push_back("TinyScale");
-  } else if (label == "subnormal and -0 components") f = {"Subnormal", "NegativeZero"};
+  } else if (starts_with(label, "unbalanced factors: ")) f = {"NonUnit", "HugeScale", "TinyScale", "UnbalancedScale"};
+  else if (label == "subnormal and -0 components") f = {"Subnormal", "NegativeZero"};
+  else if (label == "subnormal vector part, scalar part +-1") f = {"Subnormal", "NegativeZero", "SubnormalAxis"};
   else if (label == "negative real quaternion") f = {"NegativeReal"};
   else if (label == "-1 with -0 components") f = {"NegativeZero", "NegativeReal"};
   else if (starts_with(label, "zero quaternion in ")) f = {"ZeroQuaternion"};
