@@ -67,8 +67,12 @@ json read_json_file(const std::filesystem::path& file) {
   if (!in) throw VectorsError(file, "", "cannot be read");
   std::stringstream text;
   text << in.rdbuf();
+  return parse_json_text(text.str(), file);
+}
+
+json parse_json_text(std::string_view text, const std::filesystem::path& file) {
   try {
-    return json::parse(text.str());
+    return json::parse(text);
   } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers beyond binary64
     throw VectorsError(file, "", std::string("not valid JSON: ") + e.what());
   }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <rotorcert/vectors/vector_file.hpp>
@@ -35,5 +36,9 @@ VectorSet load_vectors(const spec::Spec& spec, const std::filesystem::path& wher
 
 /// Reads a JSON file; VectorsError on I/O or syntax errors.
 nlohmann::json read_json_file(const std::filesystem::path& file);
+
+/// Parses the text of `file` as JSON; VectorsError naming the file on syntax errors and on
+/// numbers beyond binary64 (the only exceptions it throws).
+nlohmann::json parse_json_text(std::string_view text, const std::filesystem::path& file);
 
 }  // namespace rotorcert::vectors
