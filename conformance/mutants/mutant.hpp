@@ -47,10 +47,14 @@ template <class S> S dot(const Q<S>& a, const Q<S>& b) { return a[0] * b[0] + a[
 template <class S> Q<S> scale(S k, const Q<S>& q) { return {k * q[0], k * q[1], k * q[2], k * q[3]}; }
 template <class S> Q<S> add(const Q<S>& a, const Q<S>& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]}; }
 
+/// ilogb(m), or 0 where m is 0 or NaN: ilogb is then INT_MIN, and -INT_MIN overflows (UB). The
+/// callers' results for such inputs are unchanged (0/0 and NaN propagate to NaN either way).
+template <class S> int scale_exponent(S m) { return m == 0 || std::isnan(m) ? 0 : std::ilogb(m); }
+
 /// q/|q| after an exact power-of-two rescaling (no overflow or underflow).
 template <class S> Q<S> normalized(const Q<S>& q) {
   const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
-  const int e = std::ilogb(m);
+  const int e = scale_exponent(m);
   Q<S> r;
   for (int i = 0; i < 4; ++i) r[i] = std::scalbn(q[i], -e);
   const S n = std::sqrt(dot(r, r));
@@ -111,7 +115,7 @@ template <class S> D<S> dmul(const D<S>& a, const D<S>& b) {
 /// DQ-4: (r/|r|, d/|r| - (r.d/|r|^3) r), after an exact common power-of-two rescaling of both parts.
 template <class S> D<S> dnormalized(const D<S>& s) {
   const Q<S> r0 = real(s);
-  const int e = std::ilogb(std::max({std::abs(r0[0]), std::abs(r0[1]), std::abs(r0[2]), std::abs(r0[3])}));
+  const int e = scale_exponent(std::max({std::abs(r0[0]), std::abs(r0[1]), std::abs(r0[2]), std::abs(r0[3])}));
   Q<S> r, d;
   for (int i = 0; i < 4; ++i) r[i] = std::scalbn(s[i], -e), d[i] = std::scalbn(s[i + 4], -e);
   const S n = std::sqrt(dot(r, r));

@@ -189,7 +189,8 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
       const ChildOutcome& first = job.pinpoint ? job.first : out;
       ClauseResult r = slot;
       r.outcome = timeout || first.kind == ChildOutcome::Kind::timed_out ? Outcome::timeout : Outcome::crash;
-      r.note = first.message + (r.outcome == Outcome::crash && pool.limits().memory_mb
+      // Sanitizer builds run children without the limit (ChildPool::start): say so only where it applied.
+      r.note = first.message + (r.outcome == Outcome::crash && pool.limits().memory_mb && !built_with_sanitizer()
                                     ? " (the process ran with an address-space limit of " +
                                           std::to_string(pool.limits().memory_mb) + " MiB)"
                                     : "");
