@@ -1,0 +1,396 @@
+#include "oracle.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include <rotorcert/engine/abi_op.hpp>
+#include <rotorcert/engine/cases.hpp>
+#include <rotorcert/reference/scalar.hpp>
+#include <rotorcert/registry.hpp>
+
+#include "embedded.hpp"
+
+namespace rotorcert::fuzz {
+namespace {
+
+using engine::AbiOp;
+using engine::Case;
+using engine::Observed;
+using ref::Real;
+
+struct State {
+  spec::Spec spec;
+  std::set<std::string> expected;  // "table/scalar/clause"
+};
+
+State& state() {
+  static State* s = [] {
+    ref::use_reference_precision();
+    auto* st = new State;
+    const std::filesystem::path dir = "<embedded spec>";
+    spec::parse_clauses(nlohmann::json::parse(embedded::clauses_json()), dir / "clauses.json", st->spec);
+    st->spec.examples = spec::parse_examples(nlohmann::json::parse(embedded::examples_json()), dir / "examples.json",
+                                             &st->spec.examples_version);
+    for (const auto& [path, text] : embedded::expected_failures_json()) {
+      const nlohmann::json j = nlohmann::json::parse(text);  // kept alive for the loop below
+      for (const auto& f : j.at("failures"))
+        st->expected.insert(f.at("table").get<std::string>() + "/" + f.at("scalar").get<std::string>() + "/" +
+                            f.at("clause").get<std::string>());
+    }
+    return st;
+  }();
+  return *s;
+}
+
+const char* scalar_of(const rc_impl& t) { return t.scalar == RC_SCALAR_FLOAT32 ? "float" : "double"; }
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
+  return s;
+}
+
+/// The raw words of element e of every input array, in hex (NaN payloads included).
+std::string raw_words(const Decoded& d, std::size_t e) {
+  std::string s;
+  const std::size_t word = d.f64 ? 8 : 4;
+  for (std::size_t a = 0; a < d.op->inputs.size(); ++a) {
+    const std::size_t count = element_count(*d.op, a, d.k);
+    s += (a ? " " : "") + d.op->inputs[a].name + "=[";
+    for (std::size_t j = 0; j < count; ++j) {
+      const unsigned char* p = d.raw[a].data() + (e * count + j) * word;
+      char buf[24];
+      if (d.f64) {
+        std::uint64_t u;
+        std::memcpy(&u, p, 8);
+        std::snprintf(buf, sizeof buf, "%s0x%016llx", j ? " " : "", static_cast<unsigned long long>(u));
+      } else {
+        std::uint32_t u;
+        std::memcpy(&u, p, 4);
+        std::snprintf(buf, sizeof buf, "%s0x%08x", j ? " " : "", static_cast<unsigned>(u));
+      }
+      s += buf;
+    }
+    s += "]";
+  }
+  return s;
+}
+
+[[noreturn]] void finding(const rc_impl& t, const Decoded& d, std::size_t e, const std::string& what,
+                          const std::string& tolerance, const engine::CaseVerdict& v) {
+  std::fprintf(stderr,
+               "\n==== rotorcert fuzz finding ====\n"
+               "implementation: %s (%s)\n"
+               "op:             %s (element %zu of n = %zu, k = %zu)\n"
+               "clauses:        %s, judged with class %s\n"
+               "what:           %s\n"
+               "error:          %g eps\n"
+               "inputs:         %s\n"
+               "raw bits:       %s\n"
+               "detail:         %s\n"
+               "================================\n",
+               t.name, scalar_of(t), d.op->name.c_str(), e, d.n, d.k, join(clauses_judging(d.op->name)).c_str(),
+               tolerance.c_str(), what.c_str(), v.error, engine::describe_inputs(*d.op, d.cases[e], d.format()).c_str(),
+               raw_words(d, e).c_str(), v.detail.c_str());
+  std::abort();
+}
+
+/// Calls `op` on the batch with the decoded bits; exact-size buffers, so ASan sees any overrun.
+template <class S>
+std::vector<Observed> call_raw(const rc_impl& t, const AbiOp& op, std::size_t n, std::size_t k,
+                               const std::vector<std::vector<unsigned char>>& raw) {
+  std::vector<std::vector<S>> in(raw.size()), out(op.outputs.size());
+  std::vector<const void*> in_ptrs;
+  std::vector<void*> out_ptrs;
+  for (std::size_t a = 0; a < raw.size(); ++a) {
+    in[a].resize(raw[a].size() / sizeof(S));
+    if (!raw[a].empty()) std::memcpy(in[a].data(), raw[a].data(), raw[a].size());
+    in_ptrs.push_back(in[a].empty() ? nullptr : in[a].data());
+  }
+  for (std::size_t a = 0; a < op.outputs.size(); ++a) {
+    out[a].assign(n * static_cast<std::size_t>(op.outputs[a].stride), S(0));
+    out_ptrs.push_back(out[a].data());
+  }
+  std::vector<std::uint8_t> status(n, 0xEE);  // a value no implementation writes
+  const int rc = engine::call(t, op.name, n, k, in_ptrs, out_ptrs, status.data());
+  std::vector<Observed> obs(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    obs[e].call_rc = rc;
+    obs[e].status = status[e];
+    for (std::size_t a = 0; a < op.outputs.size(); ++a) {
+      const std::size_t s = static_cast<std::size_t>(op.outputs[a].stride);
+      std::vector<Real> v;
+      for (std::size_t j = 0; j < s; ++j) v.push_back(Real(out[a][e * s + j]));
+      obs[e].outputs.push_back(std::move(v));
+    }
+  }
+  return obs;
+}
+
+std::vector<Observed> call_raw(const rc_impl& t, const AbiOp& op, std::size_t n, std::size_t k,
+                               const std::vector<std::vector<unsigned char>>& raw) {
+  return t.scalar == RC_SCALAR_FLOAT32 ? call_raw<float>(t, op, n, k, raw) : call_raw<double>(t, op, n, k, raw);
+}
+
+/// How much of an element is judged (see oracle.hpp).
+enum class Judge { everything, status_only, nothing };
+
+/// Whether values stay clear of the format's overflow and underflow: inputs other than
+/// quaternions and dual quaternions (EDGE-5 asks those to work at every scale), the translation
+/// a dual quaternion stands for, and the exact outputs, at most 2^(emax - 8) in magnitude;
+/// matrix entries (their determinant is a cube) within 2^(+-(emax / 3 - 4)) unless zero.
+bool within_headroom(const AbiOp& op, const engine::Values& inputs, const engine::Values& outputs, ref::Format f) {
+  const int emax = f == ref::Format::binary32 ? 127 : 1023;
+  const Real big = ldexp(Real(1), emax - 8);
+  const Real mat_big = ldexp(Real(1), emax / 3 - 4), mat_small = ldexp(Real(1), -(emax / 3 - 4));
+  for (std::size_t a = 0; a < op.inputs.size(); ++a) {
+    const int stride = op.inputs[a].stride;
+    if (stride == 8) {
+      // Any scale, but the translation it stands for (2 |d| / |r|) must fit the format.
+      for (std::size_t e = 0; e + 8 <= inputs[a].size(); e += 8) {
+        Real r(0), d(0);
+        for (std::size_t m = 0; m < 4; ++m) {
+          r += inputs[a][e + m] * inputs[a][e + m];
+          d += inputs[a][e + 4 + m] * inputs[a][e + 4 + m];
+        }
+        if (mpfr::isfinite(r) && mpfr::isfinite(d) && r > 0 && Real(2) * sqrt(d / r) > big) return false;
+      }
+      continue;
+    }
+    if (stride == 4) continue;
+    for (const Real& x : inputs[a]) {
+      if (!mpfr::isfinite(x)) continue;  // a DOMAIN_ERROR, judged as such
+      if (abs(x) > (stride == 9 ? mat_big : big)) return false;
+      if (stride == 9 && x != 0 && abs(x) < mat_small) return false;
+    }
+  }
+  for (const auto& arr : outputs)
+    for (const Real& y : arr)
+      if (mpfr::isfinite(y) && abs(y) > big) return false;
+  return true;
+}
+
+/// One perturbation of the inputs, as a backward-stable implementation in the format may
+/// perturb them. pattern < 3: componentwise, every component times 1 +- u (u the unit roundoff;
+/// all +, alternating, hashed signs). pattern >= 3: normwise, one element only (element
+/// (pattern - 3) / 2 in input order: one quaternion, vector, dual quaternion or matrix, each
+/// influence on its own), each of its components plus +- u |element| (hashed signs, then the
+/// opposite ones): the error of a product or normalisation of that element. One element at a time, so that errors of two
+/// inputs cannot cancel where the result depends on their difference (nlerp or slerp of nearby
+/// rotations far outside [0, 1]); it also decides the hemisphere rule where a normalised dot
+/// product is below u (a tie within the format). Returns false when there is no such element.
+bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case& p) {
+  p = c;
+  const std::uint64_t bits = 0x9E3779B97F4A7C15ull;
+  if (pattern < 3) {
+    std::size_t j = 0;
+    for (auto& arr : p.inputs)
+      for (Real& x : arr) {
+        const bool minus = pattern == 0 ? false : pattern == 1 ? (j % 2 == 1) : ((bits >> (j % 64)) & 1) != 0;
+        x *= minus ? Real(1) - u : Real(1) + u;
+        ++j;
+      }
+    return true;
+  }
+  // Two patterns per element, with opposite signs: whichever way a near-tie leans, one of them
+  // pushes it across.
+  int unit = (pattern - 3) / 2;
+  const bool negate = (pattern - 3) % 2 == 1;
+  for (std::size_t a = 0; a < p.inputs.size(); ++a) {
+    const std::size_t stride = static_cast<std::size_t>(op.inputs[a].stride);
+    if (stride == 1) continue;  // scalars: the componentwise patterns cover them
+    for (std::size_t first = 0; first + stride <= p.inputs[a].size(); first += stride) {
+      if (unit-- > 0) continue;
+      Real norm(0);
+      for (std::size_t m = first; m < first + stride; ++m) norm += c.inputs[a][m] * c.inputs[a][m];
+      const Real step = u * sqrt(norm);
+      const std::uint64_t h = bits * (static_cast<std::uint64_t>((pattern - 3) / 2) * 2654435761ull + 1);
+      for (std::size_t m = first; m < first + stride; ++m)
+        p.inputs[a][m] += (((h >> ((m - first + 7 * a) % 61)) & 1) != 0) != negate ? -step : step;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Decides how much of an element is judged: the reference is evaluated on the inputs perturbed
+/// (perturbed() above), its outputs rounded to the format
+/// and judged by the same judge_case. A status that changes under perturbation: nothing is
+/// judged (the input sits on the domain boundary, e.g. det M = 0 within rounding). Outputs that
+/// move beyond the strict bar, or values without headroom: only the status.
+Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
+  const engine::ReferenceResult want = op.reference(c.inputs, c.k);
+  const Real u = ref::format_epsilon<Real>(f) / Real(2);
+  bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f);
+  Case p;
+  for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
+    const engine::ReferenceResult r = op.reference(p.inputs, c.k);
+    if (r.status != want.status) return Judge::nothing;
+    if (!numbers) continue;
+    Observed o;
+    o.status = RC_OK;
+    o.outputs = r.outputs;
+    for (auto& arr : o.outputs)
+      for (Real& x : arr) x = engine::round_to(f, x);
+    const engine::CaseVerdict v = engine::judge_case(op, tc, c, o, f);
+    if (std::getenv("ROTORCERT_FUZZ_DEBUG"))
+      std::fprintf(stderr, "perturbation %d: %g eps (%s)\n", pattern, v.error, v.detail.c_str());
+    if (v.verdict != ref::Verdict::pass) numbers = false;
+  }
+  if (want.status == ref::Status::domain_error || numbers) return Judge::everything;
+  // MAT-3's domain is the sign of a cubic in the entries: without headroom the format cannot
+  // decide it, so the status is not judged either.
+  if (op.name == "from_matrix" && !within_headroom(op, c.inputs, want.outputs, f)) return Judge::nothing;
+  return Judge::status_only;
+}
+
+/// With ROTORCERT_FUZZ_STATS set: per op, how many elements were judged how (printed at exit),
+/// to see how much of what a harness generates is judged in full.
+struct Stats {
+  std::map<std::string, std::array<std::size_t, 3>> counts;
+  ~Stats() {
+    if (std::getenv("ROTORCERT_FUZZ_STATS") == nullptr) return;
+    for (const auto& [op, c] : counts)
+      std::fprintf(stderr, "stats: %-28s everything %8zu  status only %8zu  nothing %8zu\n", op.c_str(), c[0], c[1], c[2]);
+  }
+};
+Stats& stats() {
+  static Stats s;
+  return s;
+}
+
+}  // namespace
+
+void init() { (void)state(); }
+
+const spec::Spec& embedded_spec() { return state().spec; }
+
+bool is_expected_failure(const std::string& table, const std::string& scalar, const std::string& clause) {
+  return state().expected.count(table + "/" + scalar + "/" + clause) != 0;
+}
+
+std::vector<std::string> clauses_judging(const std::string& op) {
+  std::vector<std::string> r;
+  for (const spec::Clause& cl : embedded_spec().clauses) {
+    if (cl.level == "Meta") continue;
+    const auto ops = engine::ops_for_clause(cl.id);
+    if (std::find(ops.begin(), ops.end(), op) != ops.end()) r.push_back(cl.id);
+  }
+  return r;
+}
+
+std::string fuzz_tolerance(const std::string& op) {
+  const spec::Spec& s = embedded_spec();
+  std::string best;
+  double best_loose = -1;
+  for (const std::string& clause : clauses_judging(op)) {
+    if (clause == "EXP-2") continue;  // the round trip, judged on its own
+    const std::string name = engine::tolerance_for(s, clause, op);
+    const spec::ToleranceClass& tc = s.lookup(name);
+    double loose = -1;
+    if (tc.kind == "formula") loose = 1e300;  // inherited-mat: 256 eps + 8 delta, the loosest there is
+    else if (tc.kind == "eps") loose = tc.loose_value()->toDouble();
+    else continue;  // exact (identity inputs only), outcome (status only), informative
+    if (loose > best_loose) {
+      best_loose = loose;
+      best = name;
+    }
+  }
+  return best;
+}
+
+bool eligible(const rc_impl& table, const std::string& op, std::string* why) {
+  if (!engine::supports(table, op)) {
+    if (why) *why = "no such op";
+    return false;
+  }
+  const auto claimed = engine::claimed_clauses(table);
+  for (const std::string& clause : clauses_judging(op)) {
+    if (std::find(claimed.begin(), claimed.end(), clause) == claimed.end()) {
+      if (why) *why = "does not claim " + clause;
+      return false;
+    }
+    if (is_expected_failure(table.name, scalar_of(table), clause)) {
+      if (why) *why = "known defect " + clause;
+      return false;
+    }
+  }
+  return true;
+}
+
+int check(const Decoded& d) {
+  init();
+  const spec::Spec& s = embedded_spec();
+  const AbiOp& op = *d.op;
+  const ref::Format f = d.format();
+  const std::string tol_name = fuzz_tolerance(op.name);
+  const spec::ToleranceClass& tc = s.lookup(tol_name);
+
+  // Per element: the reference status and how much is judged (the same for every table).
+  std::vector<Judge> judge(d.n);
+  std::vector<ref::Status> want(d.n);
+  for (std::size_t e = 0; e < d.n; ++e) {
+    want[e] = op.reference(d.cases[e].inputs, d.k).status;
+    judge[e] = how_to_judge(op, tc, d.cases[e], f);
+    ++stats().counts[op.name][static_cast<std::size_t>(judge[e])];
+  }
+
+  int tables = 0;
+  for (const rc_impl* t : impl::builtin_tables()) {
+    if ((t->scalar == RC_SCALAR_FLOAT64) != d.f64 || !eligible(*t, op.name)) continue;
+    ++tables;
+    const std::vector<Observed> got = call_raw(*t, op, d.n, d.k, d.raw);
+    for (std::size_t e = 0; e < d.n; ++e) {
+      if (judge[e] == Judge::everything) {
+        const engine::CaseVerdict v = engine::judge_case(op, tc, d.cases[e], got[e], f);
+        if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
+      } else if (judge[e] == Judge::status_only && (got[e].call_rc != 0 || got[e].status != RC_OK)) {
+        finding(*t, d, e, "ill-conditioned input inside the domain: status OK required", tol_name,
+                {ref::Verdict::fail, NAN,
+                 "call returned " + std::to_string(got[e].call_rc) + ", status byte " + std::to_string(got[e].status)});
+      }
+    }
+    // EXP-2: exp(log q) = q through the implementation, on log's own outputs.
+    if (op.name == "log" && engine::supports(*t, "exp") && eligible(*t, "exp")) {
+      const AbiOp& exp_op = *engine::find_abi_op("exp");
+      const std::size_t word = d.f64 ? 8 : 4;
+      std::vector<std::vector<unsigned char>> raw(1);
+      for (std::size_t e = 0; e < d.n; ++e)
+        for (const Real& x : got[e].outputs.at(0)) {
+          unsigned char w[8];
+          if (d.f64) {
+            const double v = x.toDouble();
+            std::memcpy(w, &v, 8);
+          } else {
+            const float v = mpfr_get_flt(x.mpfr_srcptr(), MPFR_RNDN);
+            std::memcpy(w, &v, 4);
+          }
+          raw[0].insert(raw[0].end(), w, w + word);
+        }
+      const std::vector<Observed> back = call_raw(*t, exp_op, d.n, 0, raw);
+      const std::string rt_name = engine::tolerance_for(s, "EXP-2", "log");
+      for (std::size_t e = 0; e < d.n; ++e) {
+        if (want[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
+        const engine::CaseVerdict v = engine::judge_round_trip(s.lookup(rt_name), d.cases[e], got[e], back[e], f);
+        if (v.verdict == ref::Verdict::fail) {
+          engine::CaseVerdict shown = v;
+          shown.detail += "; log q = [";
+          for (const Real& x : got[e].outputs.at(0)) shown.detail += engine::hexfloat(x, f) + " ";
+          shown.detail += "]";
+          finding(*t, d, e, "EXP-2: exp(log q) != q through the implementation", rt_name, shown);
+        }
+      }
+    }
+  }
+  return tables;
+}
+
+}  // namespace rotorcert::fuzz
