@@ -2,6 +2,8 @@
 // sorted and the output is deterministic), one buffer as a base64 data: URI.
 #include <rotorcert/render/gltf_write.hpp>
 
+#include <rotorcert/render/base64.hpp>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -20,24 +22,6 @@ using nlohmann::json;
 constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
 constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 
-std::string base64(const std::vector<std::uint8_t>& in) {
-  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((in.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 2 < in.size(); i += 3) {
-    const unsigned v = unsigned(in[i]) << 16 | unsigned(in[i + 1]) << 8 | in[i + 2];
-    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], t[v & 63]};
-  }
-  if (i + 1 == in.size()) {
-    const unsigned v = unsigned(in[i]) << 16;
-    out += {t[v >> 18], t[(v >> 12) & 63], '=', '='};
-  } else if (i + 2 == in.size()) {
-    const unsigned v = unsigned(in[i]) << 16 | unsigned(in[i + 1]) << 8;
-    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], '='};
-  }
-  return out;
-}
 
 /// The document under construction: JSON plus the one binary buffer every accessor views.
 struct Writer {
