@@ -1,14 +1,17 @@
 // `rotorcert report --out DIR`: the main job. Certifies every built-in implementation (each
 // clause in an isolated child process), runs every mutant of conformance/mutants/ against the
-// clauses it must break, and writes report.json, report.md and report.html.
+// clauses it must break, runs the render check (VIS-1..3, render_check/) on the built-in
+// characters, and writes report.json, report.md and report.html.
 // Exit 0 when every table behaves as expected (its known defects, impls/*/expected_failures.json,
-// FAIL and everything else it claims passes) and every mutant is killed; 1 otherwise; 2 on usage.
+// FAIL and everything else it claims passes), every mutant is killed and every render-check
+// method gives what is expected of it; 1 otherwise; 2 on usage.
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include <rotorcert/certify/certify.hpp>
+#include <rotorcert/render/render_check.hpp>
 
 #include "certify_cli.hpp"
 #include "commands.hpp"
@@ -28,6 +31,10 @@ struct Args {
   std::vector<std::string> impls;
   std::string mutant_dir = ROTORCERT_MUTANT_DIR;
   bool no_mutants = false;
+  std::string render_dir;   // --render: the output directory of an earlier `rotorcert render`
+  std::string render_file;  // --render-file: a glTF file instead of the built-in characters
+  int render_frames = 4;
+  bool no_render = false;
 };
 
 struct MutantRun {
@@ -83,6 +90,45 @@ int run(const Args& a) {
     }
   const std::size_t builtin_count = targets.size();
 
+  // The render check (VIS-1..3) runs first, so that a malformed --render-file is a usage error at
+  // once: on the built-in characters into OUT/render, or read from an earlier `rotorcert render`.
+  // Its outcome joins the exit code: a method not as expected (render_check.hpp) makes it 1.
+  certify::json render_section;
+  std::string render_note;
+  if (!a.no_render) {
+    std::string dir = a.render_dir;
+    if (dir.empty()) {
+      RenderRequest request;
+      request.file = a.render_file;
+      request.out = (std::filesystem::path(a.common.out) / "render").string();
+      request.frames = a.render_frames;
+      request.impls = a.impls;
+      request.print = false;
+      request.require_methods = false;
+      // A stale render.json must not stand in for this run's.
+      std::filesystem::remove(std::filesystem::path(request.out) / "render.json");
+      if (!a.common.quiet) std::cout << "render check (VIS-1..3) into " << request.out << " ...\n" << std::flush;
+      if (run_render(request, "rotorcert report: render") == kExitUsage) return kExitUsage;
+      dir = request.out;
+    }
+    if (a.render_dir.empty() && !std::filesystem::exists(std::filesystem::path(dir) / "render.json")) {
+      render_note = "the implementations chosen offer neither linear blend nor dual quaternion skinning";
+    } else {
+      try {
+        render_section = render::report_section(dir);
+        // report.md links the strips relative to itself.
+        const auto out_abs = std::filesystem::absolute(a.common.out);
+        for (certify::json& f : render_section.at("figures"))
+          f["file"] = std::filesystem::absolute(f.at("file").get<std::string>()).lexically_relative(out_abs).generic_string();
+      } catch (const std::exception& e) {
+        std::cerr << "rotorcert report: render: " << e.what() << '\n';
+        return kExitUsage;
+      }
+    }
+  } else {
+    render_note = "left out (--no-render)";
+  }
+
   // Mutants: plugins of the build tree, each judged on the clauses it must break.
   std::vector<MutantRun> mutants;
   std::string mutants_note;
@@ -125,6 +171,15 @@ int run(const Args& a) {
   } else {
     report["sections"]["mutants"] = {{"note", mutants_note}};
   }
+  if (!render_section.is_null()) {
+    if (!render_section.at("as_expected").get<bool>()) {
+      report["summary"]["as_expected"] = false;
+      report["summary"]["exit_code"] = 1;
+    }
+    report["sections"]["render"] = std::move(render_section);
+  } else {
+    report["sections"]["render"] = {{"note", render_note}};
+  }
 
   if (!a.common.quiet) {
     for (const certify::json& c : cj) certify::print_certificate(std::cout, c, a.common.verbose);
@@ -133,6 +188,12 @@ int run(const Args& a) {
                 << '\n';
     else
       std::cout << "mutants: " << mutants_note << '\n';
+    const certify::json& rs = report["sections"]["render"];
+    if (rs.contains("counts"))
+      std::cout << "render check: " << rs.at("counts").dump() << ", "
+                << (rs.at("as_expected").get<bool>() ? "every method as expected" : "some methods NOT as expected") << '\n';
+    else
+      std::cout << "render check: " << rs.at("note").get<std::string>() << '\n';
   }
   try {
     certify::write_report(a.common.out, report);
@@ -155,6 +216,14 @@ Command add_report(CLI::App& parent) {
   app->add_option("--impl", args->impls, "Only this built-in implementation; repeatable");
   app->add_option("--mutants", args->mutant_dir, "Directory of the mutant plugins")->capture_default_str();
   app->add_flag("--no-mutants", args->no_mutants, "Leave the mutants out");
+  app->add_option("--render", args->render_dir,
+                  "Use the render check that `rotorcert render --out DIR` wrote instead of running it");
+  app->add_option("--render-file", args->render_file,
+                  "Render check on this skinned, animated .gltf/.glb instead of the built-in characters");
+  app->add_option("--render-frames", args->render_frames, "Frames per clip in the render check")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  app->add_flag("--no-render", args->no_render, "Leave the render check out");
   add_certify_options(*app, args->common);
   return {app, [args] { return run(*args); }};
 }

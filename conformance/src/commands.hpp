@@ -6,6 +6,8 @@
 #pragma once
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -34,5 +36,26 @@ Command add_report(CLI::App& parent);
 
 /// `rotorcert vectors export --out DIR` and `rotorcert vectors check FILE` (cmd_vectors.cpp).
 Command add_vectors(CLI::App& parent);
+
+/// `rotorcert render [FILE] --out DIR ...` (cmd_render.cpp; its library and build lines are in
+/// render_check/render_check.cmake).
+Command add_render(CLI::App& parent);
+
+/// What `rotorcert render` is asked to do; `rotorcert report` asks the same for its render section.
+struct RenderRequest {
+  std::string file;                 // a .gltf/.glb; empty: the built-in characters (CHAR-1)
+  std::string out;                  // render.json, render.html and the PNGs go here
+  std::vector<std::string> clips;   // empty: every clip
+  int frames = 4;
+  int width = 512;
+  int height = 512;
+  std::vector<std::string> impls;   // empty: every built-in implementation
+  double metres_per_unit = 1.0;
+  bool print = true;                // the per-method table on stdout
+  bool require_methods = true;      // false: implementations without LBS or DQS are no error (exit 0, no files)
+};
+/// Runs the render check and writes its files; the exit code of `rotorcert render` (0 as
+/// expected, 1 not, 2 usage or malformed file, messages prefixed with `who`).
+int run_render(const RenderRequest& request, const char* who);
 
 }  // namespace rotorcert::cli

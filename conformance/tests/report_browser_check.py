@@ -89,7 +89,7 @@ class Dom(html.parser.HTMLParser):
         if tag == "section":
             self.stack.append(a.get("id", ""))
             self.sections.setdefault(a.get("id", ""), {"svg": 0, "rows": 0, "tables": [], "mutant_rows": 0,
-                                                        "not_killed_rows": 0})
+                                                        "not_killed_rows": 0, "render_rows": 0, "img": 0})
         if tag == "table":
             cls = a.get("class", "")
             self.tables.append(cls)
@@ -107,13 +107,26 @@ class Dom(html.parser.HTMLParser):
                 self.sections[s]["mutant_rows"] += 1
                 if "not-killed" in a.get("class", "").split():
                     self.sections[s]["not_killed_rows"] += 1
+        if tag == "tr" and self.table_stack and "render" in self.table_stack[-1].split() and \
+                any(c in a.get("class", "").split() for c in ("as-expected", "not-as-expected")):
+            for s in self.stack:
+                self.sections[s]["render_rows"] += 1
+        if tag == "img":
+            for s in self.stack:
+                self.sections[s]["img"] += 1
         if tag == "style":
             self.in_style = True
-        if tag in ("img", "iframe", "object", "embed", "link", "audio", "video", "source"):
+        # An <img> whose every src is a data:image/ URI is embedded (the render section's
+        # figures), not loaded from elsewhere; every other such tag or attribute is external.
+        embedded = tag == "img" and all((v or "").startswith("data:image/") for n, v in attrs if n == "src") \
+            and any(n == "src" for n, _ in attrs)
+        if tag in ("img", "iframe", "object", "embed", "link", "audio", "video", "source") and not embedded:
             self.external.append(f"<{tag}>")
         for name, value in attrs:
             value = value or ""
             if name in ("src", "srcset", "data", "poster", "action", "xlink:href"):
+                if embedded and name == "src":
+                    continue
                 self.external.append(f"<{tag} {name}={value!r}>")
             elif name == "href" and not value.startswith("#"):
                 self.external.append(f"<{tag} href={value!r}>")
@@ -223,6 +236,17 @@ def check_page(report, dom_text, log, fail):
             fail.check(section["not_killed_rows"] == survivors,
                        f"the mutants table highlights {section['not_killed_rows']} rows as not killed, "
                        f"report.json has {survivors} mutants not killed")
+
+
+    render = report.get("sections", {}).get("render")
+    if isinstance(render, dict) and isinstance(render.get("rows"), list):
+        section = dom.sections.get("section-render")
+        if section is not None:
+            fail.check(section["render_rows"] == len(render["rows"]),
+                       f"the render table has {section['render_rows']} rows, report.json {len(render['rows'])}")
+            figures = render.get("figures", [])
+            fail.check(section["img"] == len(figures),
+                       f"the render section shows {section['img']} images, report.json has {len(figures)} figures")
 
 
 def main():

@@ -417,6 +417,42 @@ TEST_F(ReportRender, UnknownSectionsAreShownAsJson) {
   EXPECT_NE(md.find("\"ns_per_op\": 12"), std::string::npos);
 }
 
+// sections.render (`rotorcert report --render DIR`): the figure strips are embedded in the HTML as
+// PNG data: URIs only (anything else is dropped, so the page still loads nothing from elsewhere),
+// linked by file in the Markdown, and the error table has a row per scene and method.
+TEST_F(ReportRender, RenderSectionShowsFiguresAndTheErrorTable) {
+  RC_CLAUSE("REPORT-1");
+  const std::string png = "data:image/png;base64,iVBORw0KGgo=";
+  report["sections"]["render"] = {
+      {"source", "/tmp/r/render.json"},
+      {"renderer", "llvmpipe; 4.5"},
+      {"as_expected", true},
+      {"counts", {{"PASS", 3}, {"FAIL", 1}}},
+      {"figures",
+       {{{"scene", "medium"}, {"kind", "figure1"}, {"clip", "twist"}, {"panels", {"glm_quat float LBS", "dq float DQS"}},
+         {"file", "/tmp/r/medium/twist/figure1.png"}, {"data_uri", png}},
+        {{"scene", "medium"}, {"kind", "candy_wrapper"}, {"clip", "twist"}, {"panels", {"reference LBS"}},
+         {"file", "/tmp/r/medium/twist/candy_wrapper.png"}, {"data_uri", "javascript:alert(1)"},
+         {"volume_pct", {{"reference LBS", -0.399}}}}}},
+      {"rows",
+       {{{"scene", "medium"}, {"method", "rotor_m2 float LBS"}, {"expected", "PASS"}, {"as_expected", true},
+         {"failure", ""}, {"vis1", "PASS"}, {"max_mm", 5.46e-4}, {"mean_mm", 1e-5}, {"virtual_max_mm", 1.7e-4},
+         {"normal_max_rad", 2.9e-7}, {"vis2", "PASS"}, {"max_channel_diff", 1}, {"share_over", 0.0}, {"psnr_db", nullptr}},
+        {{"scene", "medium"}, {"method", "paper_literal float LBS"}, {"expected", "FAIL"}, {"as_expected", true},
+         {"failure", ""}, {"vis1", "FAIL"}, {"max_mm", 4066.0}, {"vis2", "FAIL"}, {"share_over", 0.374}, {"psnr_db", 21.1}}}}};
+  const std::string h = render_html(report), m = render_markdown(report);
+  const std::size_t at = h.find("<section class=\"render\" id=\"section-render\">");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_EQ(count(h, "<img"), 1u);  // the candy strip's bad URI is not used
+  EXPECT_NE(h.find("src=\"" + png + "\""), std::string::npos);
+  EXPECT_EQ(h.find("javascript:"), std::string::npos);
+  for (const char* s : {"rotor_m2 float LBS", "paper_literal float LBS", "0.000546", "4070", "reference LBS -0.399 %"})
+    EXPECT_NE(h.find(s, at), std::string::npos) << s;
+  EXPECT_NE(m.find("![Figure 1 strip](/tmp/r/medium/twist/figure1.png)"), std::string::npos) << m;
+  EXPECT_NE(m.find("| medium | `rotor_m2 float LBS` | PASS | PASS | 0.000546 |"), std::string::npos) << m;
+  EXPECT_EQ(m.find("data:image"), std::string::npos);
+}
+
 TEST_F(ReportRender, HtmlMutantsSectionIsATableWithKillRate) {
   const std::string section = html_mutants(html);
   ASSERT_FALSE(section.empty()) << "no mutants section";

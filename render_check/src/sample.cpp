@@ -8,7 +8,21 @@
 
 namespace rotorcert::render {
 
-Quat slerp(const Quat& a, const Quat& b, double s) {
+namespace {
+
+/// q / |q| for a finite nonzero q; q itself otherwise (nothing to normalise).
+Quat unit(const Quat& q) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(n > 0.0) || !std::isfinite(n)) return q;
+  return {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+}
+
+}  // namespace
+
+Quat slerp(const Quat& a_in, const Quat& b_in, double s) {
+  // SLERP-1 normalises both inputs (EDGE-5): binary32 keyframes are unit only to about 2^-24, and
+  // weights computed for unit inputs would carry that norm into the result (~1e-8 rad off SLERP-1).
+  const Quat a = unit(a_in), b = unit(b_in);
   double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
   const double sign = d < 0.0 ? -1.0 : 1.0;  // the shorter arc: interpolate towards -b
   // Angle between a and sign*b from atan2(|a - sb|, |a + sb|): accurate for near and far pairs,

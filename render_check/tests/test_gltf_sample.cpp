@@ -66,6 +66,22 @@ TEST(GltfSample, LinearRotationIsShortestArcSlerp) {
   expect_near(sample_channel(ch, 1.0 / 3), std::array<double, 4>{wb / 2, wb / 2, wb / 2, wa + wb / 2}, class_tolerance("eps4", kEps64));
 }
 
+// SLERP-1 normalises its inputs: keyframes scaled by 2 and by 1/2 (a binary32 keyframe is only
+// nearly unit; exact powers of two keep this check exact) interpolate to the same unit rotation
+// as the unit keyframes. Computed by hand: 1 and the quarter turn about z, (0, 0, h, h) with
+// h = sqrt(1/2), are 45 deg apart on the 4-sphere; halfway is the eighth turn about z,
+// (0, 0, sin(22.5 deg), cos(22.5 deg)).
+TEST(GltfSample, SlerpNormalisesItsInputs) {
+  RC_CLAUSE("GLTF-2");
+  const double h = std::sqrt(0.5);
+  const Quat a{0, 0, 0, 1}, b{0, 0, h, h};
+  const double tol = class_tolerance("eps4", kEps64);
+  for (const Quat& got : {slerp(a, b, 0.5), slerp(Quat{0, 0, 0, 2}, Quat{0, 0, h / 2, h / 2}, 0.5)}) {
+    expect_near(got, std::array<double, 4>{0, 0, std::sin(M_PI / 8), std::cos(M_PI / 8)}, tol);
+    EXPECT_NEAR(std::hypot(got[2], got[3]), 1.0, tol);
+  }
+}
+
 TEST(GltfSample, LinearRotationUsesThePluggedInterpolation) {
   RC_CLAUSE("GLTF-2");
   const Channel ch = one_channel("rotation", "LINEAR", {0, 1}, {0, 0, 0, 1, 0, 0, 1, 0});

@@ -579,11 +579,74 @@ void render_mutants(std::ostream& out, const json& section) {
   out << "</tbody>\n</table>\n</div>\n</section>\n";
 }
 
-/// Sections without a renderer yet (later issues: speed, render, third_party), shown as JSON.
+constexpr const char* kRenderTitle = "Render check: visual equivalence (VIS-1, VIS-2, VIS-3)";
+
+/// obj[key], or null when obj is not an object or has no such key (renderers never throw).
+json field(const json& obj, const char* key) { return obj.is_object() && obj.contains(key) ? obj[key] : json(); }
+/// PSNR: null in render.json means identical frames (infinite PSNR).
+std::string psnr_text(const json& row) {
+  return row.is_object() && row.contains("psnr_db") && row["psnr_db"].is_null() ? "\u221e" : stat_text(field(row, "psnr_db"));
+}
+
+/// sections.render (`rotorcert report --render DIR`): the Figure 1 and candy-wrapper strips, embedded
+/// (only data:image/png;base64 URIs are used, so the page still loads nothing from elsewhere), and
+/// the error table, one row per scene and method.
+void render_render(std::ostream& out, const json& section) {
+  if (!str(section, "note").empty()) {
+    out << "<section class=\"render\" id=\"section-render\">\n<h2>" << kRenderTitle << "</h2>\n<p class=\"muted\">"
+        << esc(str(section, "note")) << "</p>\n</section>\n";
+    return;
+  }
+  out << "<section class=\"render\" id=\"section-render\">\n<h2>" << kRenderTitle << "</h2>\n<p class=\"muted\">From <code>"
+      << esc(str(section, "source")) << "</code>; renderer " << esc(str(section, "renderer")) << ". Results "
+      << (str(section, "as_expected") == "true" ? "match" : "<strong class=\"no\">DO NOT match</strong>")
+      << " expectations (" << esc(counts_text(obj_at(section, "counts")))
+      << " over VIS-1 and VIS-2). Vertex errors in mm against the MPFR reference of the same technique; images against "
+         "the reference frame of the same renderer.</p>\n";
+  for (const json& f : arr(section, "figures")) {
+    const std::string uri = str(f, "data_uri");
+    const bool figure1 = str(f, "kind") == "figure1";
+    std::string caption = std::string(figure1 ? "Figure 1 strip (QLB, DQB, GA rotor)" : "Candy-wrapper strip") + ", " +
+                          str(f, "scene") + ", clip " + str(f, "clip") + ", last frame; left to right: " +
+                          join(arr(f, "panels"), ", ");
+    if (!figure1) {
+      std::vector<std::string> v;
+      for (const auto& [name, pct] : obj_at(f, "volume_pct").items()) v.push_back(name + " " + stat_text(pct) + " %");
+      if (!v.empty()) caption += ". Volume change (VIS-3): " + join(v, ", ");
+    }
+    out << "<figure>";
+    if (uri.rfind("data:image/png;base64,", 0) == 0)
+      out << "<img style=\"max-width:100%\" alt=\"" << esc(caption) << "\" src=\"" << esc(uri) << "\">";
+    out << "<figcaption>" << esc(caption) << "</figcaption></figure>\n";
+  }
+  out << "<div class=\"scroll\">\n<table class=\"render\">\n<thead><tr><th>Scene</th><th>Method</th><th>Expected</th>"
+         "<th>VIS-1</th><th>max mm</th><th>mean mm</th><th>virtual mm</th><th>normal rad</th><th>VIS-2</th>"
+         "<th>max diff</th><th>share &gt; 1 level</th><th>PSNR dB</th></tr></thead>\n<tbody>\n";
+  for (const json& r : arr(section, "rows")) {
+    const bool ok = str(r, "as_expected") == "true";
+    out << "<tr class=\"" << (ok ? "as-expected" : "not-as-expected") << "\"><td>" << esc(str(r, "scene")) << "</td><td><code>"
+        << esc(str(r, "method")) << "</code>";
+    if (!str(r, "failure").empty()) out << "<div class=\"error\">" << esc(str(r, "failure")) << "</div>";
+    out << "</td><td>" << esc(str(r, "expected").empty() ? "\u2014" : str(r, "expected"))
+        << (ok ? "" : " <strong class=\"no\">(not met)</strong>") << "</td><td><span class=\"badge oc-" << esc(str(r, "vis1"))
+        << "\">" << esc(str(r, "vis1")) << "</span></td><td>" << stat_text(field(r, "max_mm")) << "</td><td>"
+        << stat_text(field(r, "mean_mm")) << "</td><td>" << stat_text(field(r, "virtual_max_mm")) << "</td><td>"
+        << stat_text(field(r, "normal_max_rad")) << "</td><td><span class=\"badge oc-" << esc(str(r, "vis2")) << "\">"
+        << esc(str(r, "vis2")) << "</span></td><td>" << esc(str(r, "max_channel_diff")) << "</td><td>"
+        << stat_text(field(r, "share_over")) << "</td><td>" << psnr_text(r) << "</td></tr>\n";
+  }
+  out << "</tbody>\n</table>\n</div>\n</section>\n";
+}
+
+/// Sections without a renderer yet (later issues: speed, third_party), shown as JSON.
 void render_sections(std::ostream& out, const json& r) {
   for (const auto& [name, value] : obj_at(r, "sections").items()) {
     if (name == "mutants" && value.is_object()) {
       render_mutants(out, value);
+      continue;
+    }
+    if (name == "render" && value.is_object()) {
+      render_render(out, value);
       continue;
     }
     out << "<section class=\"extra\" id=\"section-" << esc(name) << "\">\n<h2>" << esc(name)

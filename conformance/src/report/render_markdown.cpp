@@ -286,13 +286,66 @@ void render_mutants(std::ostream& out, const json& section) {
   out << "\n";
 }
 
-/// Sections this renderer does not know (later issues: speed, render, third_party): visible as
+/// obj[key], or null when obj is not an object or has no such key (renderers never throw).
+json field(const json& obj, const char* key) { return obj.is_object() && obj.contains(key) ? obj[key] : json(); }
+/// PSNR: null in render.json means identical frames (infinite PSNR).
+std::string psnr_text(const json& row) {
+  return row.is_object() && row.contains("psnr_db") && row["psnr_db"].is_null() ? "\u221e" : stat_text(field(row, "psnr_db"));
+}
+
+/// sections.render (`rotorcert report --render DIR`): the figure strips as image links to the PNG
+/// files `rotorcert render` wrote (Markdown viewers differ on data: URIs), and the error table.
+void render_render(std::ostream& out, const json& section) {
+  out << "## Render check: visual equivalence (VIS-1, VIS-2, VIS-3) <a id=\"section-render\"></a>\n\n";
+  if (!str(section, "note").empty()) {
+    out << cell(str(section, "note")) << "\n\n";
+    return;
+  }
+  out
+      << "From " << code(str(section, "source")) << "; renderer " << cell(str(section, "renderer")) << ". Results "
+      << (str(section, "as_expected") == "true" ? "match" : "**DO NOT match**") << " expectations ("
+      << cell(counts_text(obj_at(section, "counts"))) << " over VIS-1 and VIS-2).\n\n";
+  for (const json& f : arr(section, "figures")) {
+    const bool figure1 = str(f, "kind") == "figure1";
+    std::string caption = std::string(figure1 ? "Figure 1 strip (QLB, DQB, GA rotor)" : "Candy-wrapper strip") + ", " +
+                          str(f, "scene") + ", clip " + str(f, "clip") + "; left to right: " + join(arr(f, "panels"), ", ");
+    if (!figure1) {
+      std::vector<std::string> v;
+      for (const auto& [name, pct] : obj_at(f, "volume_pct").items()) v.push_back(name + " " + stat_text(pct) + " %");
+      if (!v.empty()) caption += ". Volume change (VIS-3): " + join(v, ", ");
+    }
+    // Characters that would end the link target early are replaced.
+    std::string file = str(f, "file");
+    for (char& c : file)
+      if (c == ' ' || c == '(' || c == ')' || c == '<' || c == '>') c = '_';
+    out << "![" << (figure1 ? "Figure 1 strip" : "Candy-wrapper strip") << "](" << file << ")\n\n" << cell(caption) << "\n\n";
+  }
+  header(out, {"Scene", "Method", "Expected", "VIS-1", "max mm", "mean mm", "virtual mm", "normal rad", "VIS-2", "max diff",
+               "share > 1 level", "PSNR dB"});
+  for (const json& r : arr(section, "rows")) {
+    const bool ok = str(r, "as_expected") == "true";
+    std::string method = code(str(r, "method"));
+    if (!str(r, "failure").empty()) method += "<br>" + cell(str(r, "failure"));
+    row(out, {cell(str(r, "scene")), method,
+              cell(str(r, "expected").empty() ? "\u2014" : str(r, "expected")) + (ok ? "" : " **(not met)**"),
+              cell(str(r, "vis1")), stat_text(field(r, "max_mm")), stat_text(field(r, "mean_mm")),
+              stat_text(field(r, "virtual_max_mm")), stat_text(field(r, "normal_max_rad")), cell(str(r, "vis2")),
+              cell(str(r, "max_channel_diff")), stat_text(field(r, "share_over")), psnr_text(r)});
+  }
+  out << "\n";
+}
+
+/// Sections this renderer does not know (later issues: speed, third_party): visible as
 /// JSON until they get their own rendering.
 void render_sections(std::ostream& out, const json& r) {
   const json& sections = obj_at(r, "sections");
   for (const auto& [name, value] : sections.items()) {
     if (name == "mutants" && value.is_object()) {
       render_mutants(out, value);
+      continue;
+    }
+    if (name == "render" && value.is_object()) {
+      render_render(out, value);
       continue;
     }
     out << "## " << cell(name) << "\n\n";

@@ -13,8 +13,9 @@ namespace rotorcert::render {
 /// Interpolates rotation a (s = 0) to b (s = 1); s in [0, 1).
 using QuatInterpolation = std::function<Quat(const Quat& a, const Quat& b, double s)>;
 
-/// glTF's slerp in binary64: the shorter arc (b negated when a.b < 0), angle from atan2 so that
-/// nearly equal keyframes interpolate accurately; a at s = 0.
+/// glTF's slerp in binary64 as SLERP-1 defines it: a and b normalised first (finite nonzero
+/// inputs), the shorter arc (b negated when a.b < 0), angle from atan2 so that nearly equal
+/// keyframes interpolate accurately; a/|a| at s = 0.
 Quat slerp(const Quat& a, const Quat& b, double s);
 
 /// The channel's value at time t: translation/scale in [0..2], rotation [x,y,z,w] in [0..3].
