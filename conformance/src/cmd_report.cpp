@@ -1,17 +1,20 @@
 // `rotorcert report --out DIR`: the main job. Certifies every built-in implementation (each
 // clause in an isolated child process), runs every mutant of conformance/mutants/ against the
 // clauses it must break, runs the render check (VIS-1..3, render_check/) on the built-in
-// characters, and writes report.json, report.md and report.html.
+// characters, runs the quick benchmarks (the speed section, shown and not scored) and writes
+// report.json, report.md and report.html.
 // Exit 0 when every table behaves as expected (its known defects, impls/*/expected_failures.json,
 // FAIL and everything else it claims passes), every mutant is killed and every render-check
 // method gives what is expected of it; 1 otherwise; 2 on usage.
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include <rotorcert/certify/certify.hpp>
 #include <rotorcert/render/render_check.hpp>
+#include <rotorcert/report/speed.hpp>
 
 #include "certify_cli.hpp"
 #include "commands.hpp"
@@ -35,6 +38,9 @@ struct Args {
   std::string render_file;  // --render-file: a glTF file instead of the built-in characters
   int render_frames = 4;
   bool no_render = false;
+  std::string bench_dir;  // --bench: a directory with the bench.json of an earlier `rotorcert bench`
+  bool bench_full = false;
+  bool no_bench = false;
 };
 
 struct MutantRun {
@@ -181,6 +187,40 @@ int run(const Args& a) {
     report["sections"]["render"] = {{"note", render_note}};
   }
 
+  // Speed (issue 7): the quick benchmark run into OUT/bench, after certifying so that no child
+  // process of the certification competes with it for the CPUs. Shown, not scored.
+  if (a.no_bench) {
+    report["sections"]["speed"] = {{"note", "left out (--no-bench)"}};
+  } else {
+    certify::json bench;
+    std::string bench_file;
+    int rc = kExitOk;
+    if (!a.bench_dir.empty()) {
+      bench_file = (std::filesystem::path(a.bench_dir) / "bench.json").string();
+      try {
+        std::ifstream in(bench_file);
+        if (!in) throw std::runtime_error("cannot be read (run rotorcert bench --out " + a.bench_dir + ")");
+        bench = certify::json::parse(in);
+      } catch (const std::exception& e) {
+        std::cerr << "rotorcert report: --bench: " << bench_file << ": " << e.what() << '\n';
+        return kExitUsage;
+      }
+    } else {
+      BenchRequest request;
+      request.out = (std::filesystem::path(a.common.out) / "bench").string();
+      request.quick = !a.bench_full;
+      bench_file = (std::filesystem::path(request.out) / "bench.json").string();
+      if (!a.common.quiet) std::cout << "benchmarks (" << (request.quick ? "quick" : "full") << ") into " << request.out << " ...\n" << std::flush;
+      rc = run_bench(request, "rotorcert report: bench", bench);
+    }
+    try {
+      report["sections"]["speed"] = rc == kExitOk ? report::speed_section(bench, cj, bench_file)
+                                                  : certify::json{{"note", "the benchmark run failed; see " + bench_file + " and bench.log"}};
+    } catch (const std::exception& e) {
+      report["sections"]["speed"] = {{"note", std::string("no speed section: ") + e.what()}};
+    }
+  }
+
   if (!a.common.quiet) {
     for (const certify::json& c : cj) certify::print_certificate(std::cout, c, a.common.verbose);
     if (mutants_note.empty())
@@ -194,6 +234,11 @@ int run(const Args& a) {
                 << (rs.at("as_expected").get<bool>() ? "every method as expected" : "some methods NOT as expected") << '\n';
     else
       std::cout << "render check: " << rs.at("note").get<std::string>() << '\n';
+    const certify::json& sp = report["sections"]["speed"];
+    if (sp.contains("targets"))
+      print_speed_summary(std::cout, sp);
+    else
+      std::cout << "speed: " << sp.at("note").get<std::string>() << '\n';
   }
   try {
     certify::write_report(a.common.out, report);
@@ -224,6 +269,9 @@ Command add_report(CLI::App& parent) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   app->add_flag("--no-render", args->no_render, "Leave the render check out");
+  app->add_option("--bench", args->bench_dir, "Use the bench.json that `rotorcert bench --out DIR` wrote instead of running it");
+  app->add_flag("--bench-full", args->bench_full, "Run every benchmark size (not only the quick set)");
+  app->add_flag("--no-bench", args->no_bench, "Leave the speed section out");
   add_certify_options(*app, args->common);
   return {app, [args] { return run(*args); }};
 }

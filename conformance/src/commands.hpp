@@ -6,10 +6,12 @@
 #pragma once
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 namespace rotorcert::cli {
 
@@ -57,5 +59,21 @@ struct RenderRequest {
 /// Runs the render check and writes its files; the exit code of `rotorcert render` (0 as
 /// expected, 1 not, 2 usage or malformed file, messages prefixed with `who`).
 int run_render(const RenderRequest& request, const char* who);
+
+/// `rotorcert bench [--quick] --out DIR` (cmd_bench.cpp).
+Command add_bench(CLI::App& parent);
+
+/// What `rotorcert bench` is asked to run; `rotorcert report` asks the quick run for its speed section.
+struct BenchRequest {
+  std::string out;     // bench.json (Google Benchmark's format) and bench.log go here
+  bool quick = false;  // rotorcert_bench --quick
+  std::string filter;  // --benchmark_filter; empty: all
+  std::string binary;  // empty: the rotorcert_bench of this build
+};
+/// Runs rotorcert_bench; on success `bench` holds its JSON, DIR/bench.json is written (renamed
+/// into place when whole). Exit code as `rotorcert bench`, messages prefixed with `who`.
+int run_bench(const BenchRequest& request, const char* who, nlohmann::json& bench);
+/// The targets and the paper's claim from a speed section, a line each.
+void print_speed_summary(std::ostream& out, const nlohmann::json& speed);
 
 }  // namespace rotorcert::cli

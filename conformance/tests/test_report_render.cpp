@@ -211,7 +211,7 @@ json sample_report() {
              {{"PASS", 3}, {"QUALITY_WARNING", 1}, {"FAIL", 3}, {"NOT_SUPPORTED", 1}, {"CRASH", 1}, {"TIMEOUT", 1}}},
             {"as_expected", false},
             {"exit_code", 1}}},
-          {"sections", {{"speed", {{"ns_per_op", 12}, {"remark", "<not yet rendered>"}}}, {"mutants", mutants_section()}}}};
+          {"sections", {{"third_party", {{"ns_per_op", 12}, {"remark", "<not yet rendered>"}}}, {"mutants", mutants_section()}}}};
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -410,10 +410,10 @@ TEST_F(ReportRender, ConventionsExpectedFailuresAndPluginsAreExplained) {
 }
 
 TEST_F(ReportRender, UnknownSectionsAreShownAsJson) {
-  const std::size_t at = html.find("<section class=\"extra\" id=\"section-speed\">\n<h2>speed</h2>\n<pre");
+  const std::size_t at = html.find("<section class=\"extra\" id=\"section-third_party\">\n<h2>third_party</h2>\n<pre");
   ASSERT_NE(at, std::string::npos);
   EXPECT_NE(html.find("&quot;ns_per_op&quot;: 12", at), std::string::npos);
-  EXPECT_NE(md.find("## speed\n\n```json\n"), std::string::npos);
+  EXPECT_NE(md.find("## third_party\n\n```json\n"), std::string::npos);
   EXPECT_NE(md.find("\"ns_per_op\": 12"), std::string::npos);
 }
 

@@ -5,7 +5,8 @@
 //      product, and binary64 fallbacks for the rare far-out lanes (|t| > 4 in slerp, |v| > 8 in
 //      exp) where a binary32 polynomial would lose accuracy in proportion to the argument;
 //   2. per-target code (compiled once per Highway target by foreach_target.h): the data-layout
-//      transform (AoS ABI arrays <-> SoA lanes), the SoA math kernels, and the batch loops;
+//      transform (AoS ABI arrays <-> SoA lanes), the SoA math kernels, the fast paths of slerp,
+//      nlerp and QLB (k = 4) for blocks of ordinary inputs, and the batch loops;
 //   3. dispatch (compiled once): Highway's HWY_DYNAMIC_DISPATCH picks the default target, an
 //      explicit table of the compiled targets lets select_target / ROTORCERT_SIMD_TARGET force one.
 //
@@ -17,14 +18,18 @@
 // `bad` lane mask (zero or non-finite quaternion, non-finite vector or t, bad weights) and
 // poisons that lane's outputs with quiet NaN and status RC_DOMAIN_ERROR. Non-unit inputs are
 // scaled by an exact power of two near their largest |component| before any square is taken,
-// so no input the format holds overflows or underflows (NORM-1, EDGE-5, EDGE-8).
+// so no input the format holds overflows or underflows (NORM-1, EDGE-5, EDGE-8). The fast
+// paths (2b') skip all of that for blocks whose every lane is ordinary (unit inputs, t in
+// [0, 1], ...) and hand any other block to these general kernels.
 
 // ---- 1. shared scalar code ------------------------------------------------------------------
 #ifndef ROTORCERT_ROTOR_SIMD_SHARED
 #define ROTORCERT_ROTOR_SIMD_SHARED
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -37,6 +42,9 @@
 
 #include <rotorcert/impl_table.hpp>
 #include <rotorcert/runtime/exact_sign.hpp>
+
+/// Forces a lambda inline (GCC and Clang attribute syntax for a lambda's call operator).
+#define ROTORCERT_SIMD_INLINE __attribute__((always_inline))
 
 namespace rotorcert::rotor_simd {
 
@@ -243,6 +251,116 @@ HWY_INLINE void for_blocks(std::size_t n, const float* const (&in)[kIns], const 
   std::memcpy(status + i, s, count);
 }
 
+// ---- 2a'. the fast paths' lane order ------------------------------------------------------
+//
+// The fast paths (slerp, nlerp, QLB with k = 4; section 2b') use a cheaper transform than
+// LoadInterleaved4: a 4x4 transpose inside every 128-bit block, without LoadInterleaved4's
+// block shuffles (8 shuffles per four vectors instead of 16 on AVX-512). With B = N/4 blocks
+// per vector, lane 4b + p then holds element B*p + b of the block, not element 4b + p:
+//
+//     AVX-512 (B = 4): lanes 0..15 hold elements 0 4 8 12  1 5 9 13  2 6 10 14  3 7 11 15
+//     AVX2    (B = 2): lanes 0..7  hold elements 0 2 4 6  1 3 5 7
+//     SSE     (B = 1): the identity.
+//
+// The kernels are lane-wise, so this only matters for per-element scalars (t, loaded through
+// a lane permutation) and blend weights (transposed the same way). The same transpose takes
+// the results back to AoS. It relies on x86's per-block InterleaveLower/Upper; SCALAR (one lane)
+// and other architectures keep the AoS order (LoadInterleaved4 and gathers).
+#if HWY_TARGET != HWY_SCALAR && (HWY_ARCH_X86 || HWY_TARGET == HWY_EMU128)
+
+/// 4x4 transpose inside every 128-bit block: lane i of block b of output o_j is lane j of
+/// block b of input i. It is its own inverse.
+HWY_INLINE void transpose_in_blocks(V i0, V i1, V i2, V i3, V& o0, V& o1, V& o2, V& o3) {
+  const D d;
+  const hn::Repartition<std::uint64_t, D> d64;
+  const V lo01 = hn::InterleaveLower(d, i0, i1), lo23 = hn::InterleaveLower(d, i2, i3);  // [x0 x1 y0 y1]..
+  const V hi01 = hn::InterleaveUpper(d, i0, i1), hi23 = hn::InterleaveUpper(d, i2, i3);  // [z0 z1 w0 w1]..
+  o0 = hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, lo01), hn::BitCast(d64, lo23)));
+  o1 = hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, lo01), hn::BitCast(d64, lo23)));
+  o2 = hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, hi01), hn::BitCast(d64, hi23)));
+  o3 = hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, hi01), hn::BitCast(d64, hi23)));
+}
+
+/// N quaternions (4N floats) in the fast paths' lane order.
+HWY_INLINE Quat load_quat_blocked(const float* p) {
+  const D d;
+  const std::size_t n = hn::Lanes(d);
+  Quat q;
+  transpose_in_blocks(hn::LoadU(d, p), hn::LoadU(d, p + n), hn::LoadU(d, p + 2 * n), hn::LoadU(d, p + 3 * n), q.x, q.y,
+                      q.z, q.w);
+  return q;
+}
+HWY_INLINE void store_quat_blocked(const Quat& q, float* p) {
+  const D d;
+  const std::size_t n = hn::Lanes(d);
+  V o0, o1, o2, o3;
+  transpose_in_blocks(q.x, q.y, q.z, q.w, o0, o1, o2, o3);
+  hn::StoreU(o0, d, p);
+  hn::StoreU(o1, d, p + n);
+  hn::StoreU(o2, d, p + 2 * n);
+  hn::StoreU(o3, d, p + 3 * n);
+}
+
+/// N per-element floats (t) in the fast paths' lane order: lane 4b + p <- p[B*p + b].
+HWY_INLINE V load_scalar_blocked(const float* p) {
+  const D d;
+  constexpr std::size_t kN = hn::MaxLanes(D());
+  if constexpr (kN <= 4) {
+    return hn::LoadU(d, p);
+  } else {
+    static constexpr auto kIdx = [] {
+      std::array<std::int32_t, kN> idx{};
+      for (std::size_t l = 0; l < kN; ++l) idx[l] = static_cast<std::int32_t>((kN / 4) * (l % 4) + l / 4);
+      return idx;
+    }();
+    return hn::TableLookupLanes(hn::LoadU(d, p), hn::SetTableIndices(d, kIdx.data()));
+  }
+}
+
+/// Four vectors of B elements of a k = 4 blend (16B floats at q) regrouped by influence: out_j
+/// holds influence j of the B elements, one quaternion per block. With one block per vector that
+/// is four loads; AVX2 and AVX-512 need Highway's block transpose, the first half of its
+/// LoadInterleaved4, which Highway 1.0.3 names only in detail:: (x86_256/x86_512-inl.h).
+HWY_INLINE void load_by_influence(const float* q, V& o0, V& o1, V& o2, V& o3) {
+  const D d;
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2
+  hn::detail::LoadTransposedBlocks4(d, q, o0, o1, o2, o3);
+#else
+  const std::size_t n = hn::Lanes(d);
+  o0 = hn::LoadU(d, q), o1 = hn::LoadU(d, q + n), o2 = hn::LoadU(d, q + 2 * n), o3 = hn::LoadU(d, q + 3 * n);
+#endif
+}
+
+/// The four influences of N blends of k = 4 (16N floats, [q0 q1 q2 q3] per element) and their
+/// weights (4N floats), in the fast paths' lane order: influence j of each group of B elements
+/// (load_by_influence), then the in-block transpose across the four groups.
+HWY_INLINE void load_blend4_blocked(const float* q, const float* w, Quat& q0, Quat& q1, Quat& q2, Quat& q3, V& w0,
+                                    V& w1, V& w2, V& w3) {
+  const D d;
+  const std::size_t n = hn::Lanes(d);
+  V g0[4], g1[4], g2[4], g3[4];  // g<group>[influence]
+  load_by_influence(q, g0[0], g0[1], g0[2], g0[3]);
+  load_by_influence(q + 4 * n, g1[0], g1[1], g1[2], g1[3]);
+  load_by_influence(q + 8 * n, g2[0], g2[1], g2[2], g2[3]);
+  load_by_influence(q + 12 * n, g3[0], g3[1], g3[2], g3[3]);
+  transpose_in_blocks(g0[0], g1[0], g2[0], g3[0], q0.x, q0.y, q0.z, q0.w);
+  transpose_in_blocks(g0[1], g1[1], g2[1], g3[1], q1.x, q1.y, q1.z, q1.w);
+  transpose_in_blocks(g0[2], g1[2], g2[2], g3[2], q2.x, q2.y, q2.z, q2.w);
+  transpose_in_blocks(g0[3], g1[3], g2[3], g3[3], q3.x, q3.y, q3.z, q3.w);
+  transpose_in_blocks(hn::LoadU(d, w), hn::LoadU(d, w + n), hn::LoadU(d, w + 2 * n), hn::LoadU(d, w + 3 * n), w0, w1, w2,
+                      w3);
+}
+#else
+HWY_INLINE Quat load_quat_blocked(const float* p) { return load_quat(p); }
+HWY_INLINE void store_quat_blocked(const Quat& q, float* p) { store_quat(q, p); }
+HWY_INLINE V load_scalar_blocked(const float* p) { return hn::LoadU(D(), p); }
+HWY_INLINE void load_blend4_blocked(const float* q, const float* w, Quat& q0, Quat& q1, Quat& q2, Quat& q3, V& w0,
+                                    V& w1, V& w2, V& w3) {
+  q0 = gather_quat(q, 4, 0), q1 = gather_quat(q, 4, 1), q2 = gather_quat(q, 4, 2), q3 = gather_quat(q, 4, 3);
+  w0 = gather(w, 4, 0, 1, 0), w1 = gather(w, 4, 1, 1, 0), w2 = gather(w, 4, 2, 1, 0), w3 = gather(w, 4, 3, 1, 0);
+}
+#endif
+
 // ---- 2b. SoA math kernels (lane-wise; no knowledge of the ABI layout) ---------------------
 
 HWY_INLINE Quat scale(const Quat& q, V s) { return {hn::Mul(q.x, s), hn::Mul(q.y, s), hn::Mul(q.z, s), hn::Mul(q.w, s)}; }
@@ -356,7 +474,7 @@ HWY_INLINE M dot_negative(const Quat& as, const Quat& bs, const Quat& a, const Q
   const V mag = hn::MulAdd(hn::Abs(hn::Mul(as.w, bs.w)), hn::Set(d, 1.0f),
                            hn::Add(hn::Add(hn::Abs(hn::Mul(as.x, bs.x)), hn::Abs(hn::Mul(as.y, bs.y))),
                                    hn::Abs(hn::Mul(as.z, bs.z))));
-  const V bound = hn::MulAdd(mag, hn::Set(d, 0x1p-20f), hn::Set(d, 0x1p-140f));
+  const V bound = hn::MulAdd(mag, hn::Set(d, 0x1p-20f), hn::Set(d, 0x1p-126f));
   M neg = hn::Lt(dt, hn::Zero(d));
   const M unsure = hn::Le(hn::Abs(dt), bound);
   if (HWY_UNLIKELY(!hn::AllFalse(d, unsure))) {
@@ -419,6 +537,218 @@ HWY_INLINE Quat exp_small(const Vec3& v, V* theta_out = nullptr) {
   Quat r{hn::Mul(vs.x, k), hn::Mul(vs.y, k), hn::Mul(vs.z, k),
          hn::IfThenElse(zero, hn::Set(d, 1.0f), hn::Cos(d, theta))};
   return unit_of_scaled(r);
+}
+
+// ---- 2b'. fast paths: whole blocks of ordinary lanes ---------------------------------------
+//
+// A fast path computes a block in the lane order of section 2a' without writing anything and
+// returns its result with a mask of the lanes that are ordinary; the batch loop (fast_blocks)
+// stores the block if ALL lanes are (one mask test per block), else the general kernel (2c)
+// redoes the whole block. Ordinary lanes: every quaternion unit to within 2^-12 in
+// |q|^2 (any unit quaternion rounded to binary32, by a wide margin), hemisphere dots clearly
+// away from 0, t in [0, 1], blend weights >= 0 with the pivot first. Zero, non-finite, tiny or
+// huge inputs and negative weights all fail the test, so every edge outcome (EDGE-5..9), every
+// exact-sign tie (EDGE-3) and all extrapolation (SLERP-4) stay with the general kernels.
+
+constexpr float kUnitLo = 1.0f - 0x1p-12f, kUnitHi = 1.0f + 0x1p-12f;
+/// |a.b| above this is 8 times the float dot's error bound (4u |a| |b|, |a|, |b| ~ 1): its
+/// sign is the exact sign, no exact_dot_sign needed.
+constexpr float kSureSign = 0x1p-19f;
+
+/// lo <= x <= hi (0 <= lo < hi; NaN is outside). On AVX-512, where unsigned compares are native,
+/// as one compare of bit patterns: nonnegative floats order like their bits, and NaN, negative
+/// values and -0 wrap around to large differences (-0 then fails, which only costs a block its
+/// fast path).
+HWY_INLINE M in_range(V x, float lo, float hi) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+  const hn::RebindToUnsigned<D> du;
+  const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+  // Highway 1.0.3 has only Gt for unsigned lanes: diff <= hi - lo as hi - lo + 1 > diff.
+  return hn::RebindMask(D(), hn::Gt(hn::Set(du, bits(hi) - bits(lo) + 1), hn::Sub(hn::BitCast(du, x), hn::Set(du, bits(lo)))));
+#else
+  return hn::And(hn::Ge(x, hn::Set(D(), lo)), hn::Le(x, hn::Set(D(), hi)));
+#endif
+}
+HWY_INLINE M near_unit(V n2) { return in_range(n2, kUnitLo, kUnitHi); }
+
+/// 1/sqrt(n2) for n2 within 2^-12 of 1: 1 - (n2 - 1)/2. The next term, 3/8 (n2 - 1)^2 <=
+/// 2^-25.4, is below half an ulp; exact (1) for n2 = 1, so identities stay exact (EDGE-1).
+HWY_INLINE V inv_norm_near_unit(V n2) { return hn::NegMulAdd(hn::Set(D(), 0.5f), n2, hn::Set(D(), 1.5f)); }
+
+/// A block computed by a fast path: valid iff AllTrue(ordinary).
+struct FastBlock {
+  Quat q;
+  M ordinary;
+};
+HWY_INLINE void store_fast(const FastBlock& r, float* o, std::uint8_t* s) {
+  store_quat_blocked(r.q, o);
+  std::memset(s, RC_OK, hn::Lanes(D()));
+}
+
+/// sin(s phi) / sin(phi) for s0 and s1 as polynomials in y = cos(phi) - 1 (Eberly 2011): the
+/// series sum_i c_i(s) y^i with c_0 = s, c_i = c_(i-1) (s^2 - i^2) / (i (2i + 1)), i.e. the
+/// nested form s p_1 with p_i = 1 + u_i (s^2 - i^2) y p_(i+1), u_i = 1 / (i (2i + 1)),
+/// p_(n+1) = 1. Evaluated as P_i = U_i p_i with U_i = u_1 .. u_(i-1) (compile-time constants
+/// from that recurrence), P_i = U_i + (s^2 y - i^2 y) P_(i+1), P_1 = p_1, two terms per step.
+/// Used with phi <= pi/4 (y >= -0.293) and s in [0, 2], where kTerms = 7 leaves the
+/// truncation below the rounding: the whole fast slerp, simulated in binary32 on 2e6 inputs
+/// (Omega up to pi/2), errs by at most ~3.1 eps in METRIC-1 (6 terms: 5.2 eps; measured on
+/// the tests' inputs: <= 2 eps). Without the angle halving (phi = Omega <= pi/2) even 14 terms
+/// would not do: Eberly's own revised bound for 8 terms is 2.6e-5.
+constexpr double sin_ratio_u_product(int i) {  // U_i
+  double u = 1;
+  for (int j = 1; j < i; ++j) u /= j * (2.0 * j + 1);
+  return u;
+}
+template <int kI, int kN>
+HWY_INLINE void sin_ratio_tail(V a0, V a1, V y, V& p0, V& p1) {  // P_kI for both s
+  const D d;
+  const V u = hn::Set(d, static_cast<float>(sin_ratio_u_product(kI)));
+  const V i2 = hn::Set(d, static_cast<float>(kI * kI));
+  const V b0 = hn::NegMulAdd(i2, y, a0), b1 = hn::NegMulAdd(i2, y, a1);  // s^2 y - i^2 y
+  if constexpr (kI == kN) {
+    const V un = hn::Set(d, static_cast<float>(sin_ratio_u_product(kN + 1)));
+    p0 = hn::MulAdd(b0, un, u);
+    p1 = hn::MulAdd(b1, un, u);
+  } else {
+    // P_i = (U_i + b_i U_(i+1)) + (b_i b_(i+1)) P_(i+2): half the dependency chain of Horner's
+    // rule for one more operation per pair (a few % faster, measured).
+    const V u1 = hn::Set(d, static_cast<float>(sin_ratio_u_product(kI + 1)));
+    const V j2 = hn::Set(d, static_cast<float>((kI + 1) * (kI + 1)));
+    const V c0 = hn::NegMulAdd(j2, y, a0), c1 = hn::NegMulAdd(j2, y, a1);
+    V q0 = hn::Set(d, static_cast<float>(sin_ratio_u_product(kN + 1))), q1 = q0;
+    if constexpr (kI + 1 < kN) sin_ratio_tail<kI + 2, kN>(a0, a1, y, q0, q1);
+    p0 = hn::MulAdd(hn::Mul(b0, c0), q0, hn::MulAdd(b0, u1, u));
+    p1 = hn::MulAdd(hn::Mul(b1, c1), q1, hn::MulAdd(b1, u1, u));
+  }
+}
+template <int kTerms>
+HWY_INLINE void sin_ratio2(V s0, V s1, V y, V& f0, V& f1) {
+  const V a0 = hn::Mul(hn::Mul(s0, s0), y), a1 = hn::Mul(hn::Mul(s1, s1), y);  // s^2 y
+  V p0, p1;
+  sin_ratio_tail<1, kTerms>(a0, a1, y, p0, p1);
+  f0 = hn::Mul(s0, p0);
+  f1 = hn::Mul(s1, p1);
+}
+
+/// SLERP-1 fast path: the general kernel's formula without atan and sin (Highway's cost
+/// 30-40 cycles per vector each): sin((1-t) Omega) a + sin(t Omega) b' with the sine ratios
+/// f(t, Omega) = sin(t Omega) / sin(Omega) from the polynomial above: directly when every
+/// Omega of the block is <= pi/4, else after halving the angle, f(t, Omega) = f(2t, Omega/2) /
+/// (2 cos(Omega/2)), cos(Omega/2) = sqrt((1 + cos Omega) / 2).
+HWY_INLINE FastBlock slerp_fast(const float* pa, const float* pb, const float* pt) {
+  const D d;
+  const Quat a = load_quat_blocked(pa), b = load_quat_blocked(pb);
+  const V t = load_scalar_blocked(pt);
+  const V na = dot(a, a), nb = dot(b, b), ab = dot(a, b);
+  const M ordinary = hn::And(hn::And(near_unit(na), near_unit(nb)),
+                             hn::And(in_range(t, 0.0f, 1.0f), hn::Gt(hn::Abs(ab), hn::Set(d, kSureSign))));
+  const V ra = inv_norm_near_unit(na), rb = inv_norm_near_unit(nb);
+  const V cos_omega = hn::Mul(hn::Abs(ab), hn::Mul(ra, rb));  // Omega in [0, pi/2] after the flip
+  V fa, fb, k;
+  if (hn::AllTrue(d, hn::Ge(cos_omega, hn::Set(d, 0.7072f)))) {
+    // Every Omega <= pi/4 (keyframe neighbours): the series in cos(Omega) - 1 (exact, Sterbenz)
+    // converges fast enough without halving; 6 terms (simulated: <= 3.3 eps, the rounding floor).
+    sin_ratio2<6>(hn::Sub(hn::Set(d, 1.0f), t), t, hn::Sub(cos_omega, hn::Set(d, 1.0f)), fa, fb);
+    k = hn::Set(d, 1.0f);
+  } else {
+    const V h = hn::MulAdd(cos_omega, hn::Set(d, 0.5f), hn::Set(d, 0.5f));  // cos^2(Omega/2)
+    const V inv_c = rsqrt(h);                                              // 1 / cos(Omega/2); 1 for h = 1
+    const V y = hn::MulSub(h, inv_c, hn::Set(d, 1.0f));                     // cos(Omega/2) - 1, one rounding
+    sin_ratio2<7>(hn::NegMulAdd(hn::Set(d, 2.0f), t, hn::Set(d, 2.0f)), hn::Add(t, t), y, fa, fb);
+    // The common factor 1 / (2 cos(Omega/2)) keeps r unit up to rounding, so that one
+    // first-order step normalises it (and a = b' = 1 gives exactly 1: EDGE-1).
+    k = hn::Mul(inv_c, hn::Set(d, 0.5f));
+  }
+  const V ca = hn::Mul(hn::Mul(fa, ra), k);
+  const V cb = hn::CopySign(hn::Mul(hn::Mul(fb, rb), k), ab);  // b' = -b iff a.b < 0
+  const Quat r{hn::MulAdd(ca, a.x, hn::Mul(cb, b.x)), hn::MulAdd(ca, a.y, hn::Mul(cb, b.y)),
+               hn::MulAdd(ca, a.z, hn::Mul(cb, b.z)), hn::MulAdd(ca, a.w, hn::Mul(cb, b.w))};
+  return {scale(r, inv_norm_near_unit(dot(r, r))), ordinary};
+}
+
+/// NLERP-1 fast path: normalize((1 - t) a + t b') of the normalised inputs, t in [0, 1]; the sum
+/// has norm >= cos(Omega/2) >= 1/sqrt(2), inside rsqrt's range.
+HWY_INLINE FastBlock nlerp_fast(const float* pa, const float* pb, const float* pt) {
+  const D d;
+  const Quat a = load_quat_blocked(pa), b = load_quat_blocked(pb);
+  const V t = load_scalar_blocked(pt);
+  const V na = dot(a, a), nb = dot(b, b), ab = dot(a, b);
+  const M ordinary = hn::And(hn::And(near_unit(na), near_unit(nb)),
+                             hn::And(in_range(t, 0.0f, 1.0f), hn::Gt(hn::Abs(ab), hn::Set(d, kSureSign))));
+  const V ca = hn::Mul(hn::Sub(hn::Set(d, 1.0f), t), inv_norm_near_unit(na));
+  const V cb = hn::CopySign(hn::Mul(t, inv_norm_near_unit(nb)), ab);  // b' = -b iff a.b < 0
+  const Quat r{hn::MulAdd(ca, a.x, hn::Mul(cb, b.x)), hn::MulAdd(ca, a.y, hn::Mul(cb, b.y)),
+               hn::MulAdd(ca, a.z, hn::Mul(cb, b.z)), hn::MulAdd(ca, a.w, hn::Mul(cb, b.w))};
+  // a = b' = 1: r = (1 - t) + t rounds to exactly 1 for t in [0, 1], and rsqrt(1) = 1 (EDGE-1).
+  return {scale(r, rsqrt(dot(r, r))), ordinary};
+}
+
+/// QLB-1 fast path for k = 4 when influence 0 is the pivot (w_0 > 0). Non-finite inputs need
+/// no test of their own: they make the sum non-finite, which its norm test rejects.
+HWY_INLINE FastBlock qlb4_fast(const float* bq, const float* bw) {
+  const D d;
+  Quat q0, q1, q2, q3;
+  V w0, w1, w2, w3;
+  load_blend4_blocked(bq, bw, q0, q1, q2, q3, w0, w1, w2, w3);
+  V n2 = dot(q0, q0);
+  V lo = n2, hi = n2, wmin = w0, dmin = hn::Set(d, 1.0f);
+  Quat sum = scale(q0, hn::Mul(w0, inv_norm_near_unit(n2)));
+  const auto add = [&](const Quat& qj, V wj) {
+    n2 = dot(qj, qj);
+    lo = hn::Min(lo, n2);
+    hi = hn::Max(hi, n2);
+    wmin = hn::Min(wmin, wj);
+    const V dj = dot(qj, q0);  // s_j = -1 iff q_j . q_0 < 0
+    dmin = hn::Min(dmin, hn::Abs(dj));
+    const V c = hn::CopySign(hn::Mul(wj, inv_norm_near_unit(n2)), dj);
+    sum = {hn::MulAdd(c, qj.x, sum.x), hn::MulAdd(c, qj.y, sum.y), hn::MulAdd(c, qj.z, sum.z), hn::MulAdd(c, qj.w, sum.w)};
+  };
+  add(q1, w1);
+  add(q2, w2);
+  add(q3, w3);
+  const V v2 = hn::MulAdd(sum.z, sum.z, hn::MulAdd(sum.y, sum.y, hn::Mul(sum.x, sum.x)));
+  const V s2 = hn::MulAdd(sum.w, sum.w, v2);
+  const M ordinary = hn::And(hn::And(hn::And(hn::Ge(lo, hn::Set(d, kUnitLo)), hn::Le(hi, hn::Set(d, kUnitHi))),
+                                     hn::And(hn::Ge(wmin, hn::Zero(d)), hn::Gt(w0, hn::Zero(d)))),
+                             hn::And(hn::Gt(dmin, hn::Set(d, kSureSign)),
+                                     hn::And(hn::Ge(s2, hn::Set(d, 0x1p-100f)), hn::Le(s2, hn::Set(d, 0x1p100f)))));
+  Quat u = scale(sum, rsqrt(s2));
+  // A weighted sum of identities is (0, 0, 0, W): exactly +-1 out (EDGE-1).
+  u.w = hn::IfThenElse(hn::Eq(v2, hn::Zero(d)), hn::CopySign(hn::Set(d, 1.0f), sum.w), u.w);
+  return {u, ordinary};
+}
+
+/// The batch loop of a fast path over the full blocks of n elements: fast(i) computes the block
+/// at element i, general(i) is the general kernel for it. kPerStep = 2 computes two blocks
+/// before storing either: two independent dependency chains in one basic block overlap better
+/// (a few % for slerp and nlerp, measured). `fast` must be inlined for that, hence the
+/// ROTORCERT_SIMD_INLINE on its lambdas. Returns the number of elements done (a multiple of N;
+/// the caller does the tail).
+template <int kPerStep, class Fast, class General>
+HWY_INLINE std::size_t fast_blocks(std::size_t n, float* out, std::uint8_t* status, const Fast& fast,
+                                   const General& general) {
+  const D d;
+  const std::size_t lanes = hn::Lanes(d);
+  const auto finish = [&](const FastBlock& r, std::size_t i) {
+    if (HWY_LIKELY(hn::AllTrue(d, r.ordinary))) {
+      store_fast(r, out + 4 * i, status + i);
+    } else {
+      general(i);
+    }
+  };
+  std::size_t i = 0;
+  if constexpr (kPerStep == 2) {
+    for (; i + 2 * lanes <= n; i += 2 * lanes) {
+      const FastBlock r0 = fast(i), r1 = fast(i + lanes);
+      finish(r0, i);
+      finish(r1, i + lanes);
+    }
+  }
+  for (; i + lanes <= n; i += lanes) {
+    finish(fast(i), i);
+  }
+  return i;
 }
 
 // ---- 2c. batch loops: AoS in, SoA kernel, AoS out ------------------------------------------
@@ -549,59 +879,90 @@ int Exp(std::size_t n, const float* v, float* out, std::uint8_t* status) {
 /// unlike acos(a.b')), then normalize(sin((1-t) Omega) a + sin(t Omega) b'). The exact slerp
 /// is unit, so the sum's norm is sin(Omega) and normalising replaces the division by sin(Omega)
 /// with one that is never 0/0: Omega = 0 (a == b') returns a itself. Lanes with |t| > 4 are
-/// recomputed in binary64 (slerp_double).
+/// recomputed in binary64 (slerp_double). The general kernel for one block (any input; the fast
+/// path declined it).
+HWY_NOINLINE void slerp_block(const float* const* p, float* o, std::uint8_t* s) {
+  const D d;
+  const Quat qa = load_quat(p[0]), qb = load_quat(p[1]);
+  const V tt = hn::LoadU(d, p[2]);
+  const M bad = hn::Not(hn::And(hn::And(is_rotation(qa), is_rotation(qb)), hn::IsFinite(tt)));
+  const Quat as = safe_scaled(qa), bs = safe_scaled(qb);
+  const Quat ua = fast_unit_of_scaled(as);
+  const Quat ub = negate_if(dot_negative(as, bs, qa, qb), fast_unit_of_scaled(bs));
+  const Quat diff{hn::Sub(ua.x, ub.x), hn::Sub(ua.y, ub.y), hn::Sub(ua.z, ub.z), hn::Sub(ua.w, ub.w)};
+  const Quat sum{hn::Add(ua.x, ub.x), hn::Add(ua.y, ub.y), hn::Add(ua.z, ub.z), hn::Add(ua.w, ub.w)};
+  // a.b' >= 0, so |a - b'| <= |a + b'| and the ratio is tan(Omega/2) in [0, 1].
+  // hn::Atan's own polynomial for [0, 1] (hn::Atan adds a division for |x| > 1).
+  const V half = hn::impl::AtanImpl<float>().AtanPoly(d, hn::Sqrt(hn::Div(dot(diff, diff), dot(sum, sum))));
+  const V omega = hn::Add(half, half);
+  const V sa = hn::Sin(d, hn::Mul(hn::Sub(hn::Set(d, 1.0f), tt), omega));
+  const V sb = hn::Sin(d, hn::Mul(tt, omega));
+  const Quat r{hn::MulAdd(sa, ua.x, hn::Mul(sb, ub.x)), hn::MulAdd(sa, ua.y, hn::Mul(sb, ub.y)),
+               hn::MulAdd(sa, ua.z, hn::Mul(sb, ub.z)), hn::MulAdd(sa, ua.w, hn::Mul(sb, ub.w))};
+  const Quat res = select(hn::Eq(omega, hn::Zero(d)), ua, fast_unit_of_scaled(r));
+  store_quat(poison(bad, res), o);
+  const M far = hn::AndNot(bad, hn::Gt(hn::Abs(tt), hn::Set(d, 4.0f)));
+  for_each_set_lane(far, [&](std::size_t l) {
+    slerp_double(p[0] + 4 * l, p[1] + 4 * l, p[2][l], o + 4 * l);
+  });
+  store_status(bad, s);
+}
+
 int Slerp(std::size_t n, const float* a, const float* b, const float* t, float* out, std::uint8_t* status) {
-  for_blocks<3>(n, {a, b, t}, {4, 4, 1}, {kIdentity, kIdentity, kZero1}, out, 4, status,
-                [](const float* const* p, float* o, std::uint8_t* s) {
-                  const D d;
-                  const Quat qa = load_quat(p[0]), qb = load_quat(p[1]);
-                  const V tt = hn::LoadU(d, p[2]);
-                  const M bad = hn::Not(hn::And(hn::And(is_rotation(qa), is_rotation(qb)), hn::IsFinite(tt)));
-                  const Quat as = safe_scaled(qa), bs = safe_scaled(qb);
-                  const Quat ua = fast_unit_of_scaled(as);
-                  const Quat ub = negate_if(dot_negative(as, bs, qa, qb), fast_unit_of_scaled(bs));
-                  const Quat diff{hn::Sub(ua.x, ub.x), hn::Sub(ua.y, ub.y), hn::Sub(ua.z, ub.z), hn::Sub(ua.w, ub.w)};
-                  const Quat sum{hn::Add(ua.x, ub.x), hn::Add(ua.y, ub.y), hn::Add(ua.z, ub.z), hn::Add(ua.w, ub.w)};
-                  // a.b' >= 0, so |a - b'| <= |a + b'| and the ratio is tan(Omega/2) in [0, 1].
-                  // hn::Atan's own polynomial for [0, 1] (hn::Atan adds a division for |x| > 1).
-                  const V half = hn::impl::AtanImpl<float>().AtanPoly(d, hn::Sqrt(hn::Div(dot(diff, diff), dot(sum, sum))));
-                  const V omega = hn::Add(half, half);
-                  const V sa = hn::Sin(d, hn::Mul(hn::Sub(hn::Set(d, 1.0f), tt), omega));
-                  const V sb = hn::Sin(d, hn::Mul(tt, omega));
-                  const Quat r{hn::MulAdd(sa, ua.x, hn::Mul(sb, ub.x)), hn::MulAdd(sa, ua.y, hn::Mul(sb, ub.y)),
-                               hn::MulAdd(sa, ua.z, hn::Mul(sb, ub.z)), hn::MulAdd(sa, ua.w, hn::Mul(sb, ub.w))};
-                  const Quat res = select(hn::Eq(omega, hn::Zero(d)), ua, fast_unit_of_scaled(r));
-                  store_quat(poison(bad, res), o);
-                  const M far = hn::AndNot(bad, hn::Gt(hn::Abs(tt), hn::Set(d, 4.0f)));
-                  for_each_set_lane(far, [&](std::size_t l) {
-                    slerp_double(p[0] + 4 * l, p[1] + 4 * l, p[2][l], o + 4 * l);
-                  });
-                  store_status(bad, s);
+  const std::size_t done = fast_blocks<2>(
+      n, out, status, [&](std::size_t i) ROTORCERT_SIMD_INLINE { return slerp_fast(a + 4 * i, b + 4 * i, t + i); },
+      [&](std::size_t i) {
+        const float* const p[3] = {a + 4 * i, b + 4 * i, t + i};
+        slerp_block(p, out + 4 * i, status + i);
+      });
+  for_blocks<3>(n - done, {a + 4 * done, b + 4 * done, t + done}, {4, 4, 1}, {kIdentity, kIdentity, kZero1},
+                out + 4 * done, 4, status + done, [](const float* const* p, float* o, std::uint8_t* s) {
+                  const FastBlock r = slerp_fast(p[0], p[1], p[2]);
+                  if (hn::AllTrue(D(), r.ordinary)) {
+                    store_fast(r, o, s);
+                  } else {
+                    slerp_block(p, o, s);
+                  }
                 });
   return 0;
 }
 
 /// NLERP-1: normalize(a + t (b' - a)), divided by max(1, |t|) first so that no finite t
-/// overflows; exactly a when b' == a.
+/// overflows; exactly a when b' == a. The general kernel for one block.
+HWY_NOINLINE void nlerp_block(const float* const* p, float* o, std::uint8_t* s) {
+  const D d;
+  const Quat qa = load_quat(p[0]), qb = load_quat(p[1]);
+  const V tt = hn::LoadU(d, p[2]);
+  const M bad = hn::Not(hn::And(hn::And(is_rotation(qa), is_rotation(qb)), hn::IsFinite(tt)));
+  const Quat as = safe_scaled(qa), bs = safe_scaled(qb);
+  const Quat ua = fast_unit_of_scaled(as);
+  const Quat ub = negate_if(dot_negative(as, bs, qa, qb), fast_unit_of_scaled(bs));
+  const V big = hn::Max(hn::Set(d, 1.0f), hn::Abs(tt));
+  const V inv = hn::Div(hn::Set(d, 1.0f), big);
+  const V ts = hn::Div(tt, big);
+  const Quat r{hn::MulAdd(ts, hn::Sub(ub.x, ua.x), hn::Mul(ua.x, inv)),
+               hn::MulAdd(ts, hn::Sub(ub.y, ua.y), hn::Mul(ua.y, inv)),
+               hn::MulAdd(ts, hn::Sub(ub.z, ua.z), hn::Mul(ua.z, inv)),
+               hn::MulAdd(ts, hn::Sub(ub.w, ua.w), hn::Mul(ua.w, inv))};
+  store_quat(poison(bad, normalized(r)), o);  // exactly rounded: a stays a (EDGE-1)
+  store_status(bad, s);
+}
+
 int Nlerp(std::size_t n, const float* a, const float* b, const float* t, float* out, std::uint8_t* status) {
-  for_blocks<3>(n, {a, b, t}, {4, 4, 1}, {kIdentity, kIdentity, kZero1}, out, 4, status,
-                [](const float* const* p, float* o, std::uint8_t* s) {
-                  const D d;
-                  const Quat qa = load_quat(p[0]), qb = load_quat(p[1]);
-                  const V tt = hn::LoadU(d, p[2]);
-                  const M bad = hn::Not(hn::And(hn::And(is_rotation(qa), is_rotation(qb)), hn::IsFinite(tt)));
-                  const Quat as = safe_scaled(qa), bs = safe_scaled(qb);
-                  const Quat ua = fast_unit_of_scaled(as);
-                  const Quat ub = negate_if(dot_negative(as, bs, qa, qb), fast_unit_of_scaled(bs));
-                  const V big = hn::Max(hn::Set(d, 1.0f), hn::Abs(tt));
-                  const V inv = hn::Div(hn::Set(d, 1.0f), big);
-                  const V ts = hn::Div(tt, big);
-                  const Quat r{hn::MulAdd(ts, hn::Sub(ub.x, ua.x), hn::Mul(ua.x, inv)),
-                               hn::MulAdd(ts, hn::Sub(ub.y, ua.y), hn::Mul(ua.y, inv)),
-                               hn::MulAdd(ts, hn::Sub(ub.z, ua.z), hn::Mul(ua.z, inv)),
-                               hn::MulAdd(ts, hn::Sub(ub.w, ua.w), hn::Mul(ua.w, inv))};
-                  store_quat(poison(bad, normalized(r)), o);  // exactly rounded: a stays a (EDGE-1)
-                  store_status(bad, s);
+  const std::size_t done = fast_blocks<2>(
+      n, out, status, [&](std::size_t i) ROTORCERT_SIMD_INLINE { return nlerp_fast(a + 4 * i, b + 4 * i, t + i); },
+      [&](std::size_t i) {
+        const float* const p[3] = {a + 4 * i, b + 4 * i, t + i};
+        nlerp_block(p, out + 4 * i, status + i);
+      });
+  for_blocks<3>(n - done, {a + 4 * done, b + 4 * done, t + done}, {4, 4, 1}, {kIdentity, kIdentity, kZero1},
+                out + 4 * done, 4, status + done, [](const float* const* p, float* o, std::uint8_t* s) {
+                  const FastBlock r = nlerp_fast(p[0], p[1], p[2]);
+                  if (hn::AllTrue(D(), r.ordinary)) {
+                    store_fast(r, o, s);
+                  } else {
+                    nlerp_block(p, o, s);
+                  }
                 });
   return 0;
 }
@@ -645,39 +1006,56 @@ int for_blend_blocks(std::size_t n, std::size_t k, const float* q, const float* 
 
 /// QLB-1: normalize(sum w_j s_j q_j/|q_j|), s_j = -1 iff q_j . q_p < 0 (exact sign), pivot p
 /// the first influence with w > 0. One pass: influences before the pivot have weight 0, so
-/// the running pivot can stand in for them without changing the sum.
+/// the running pivot can stand in for them without changing the sum. The general kernel for one
+/// block of blends of k influences (any input; the k = 4 fast path declined it or k != 4).
+HWY_NOINLINE void qlb_block(std::size_t k, const float* bq, const float* bw, float* o, std::uint8_t* s) {
+  const D d;
+  M ok;
+  const V ws = weight_scale(bw, k, &ok);
+  Quat sum{hn::Zero(d), hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+  Quat pivot_raw = sum, pivot_scaled = sum;
+  M found = hn::Ne(ws, ws);  // all false
+  for (std::size_t j = 0; j < k; ++j) {
+    const Quat qj = gather_quat(bq, k, j);
+    const V wraw = gather(bw, k, j, 1, 0);
+    const V wj = hn::Mul(wraw, ws);
+    ok = hn::And(ok, is_rotation(qj));
+    const Quat qs = safe_scaled(qj);
+    pivot_raw = select(found, pivot_raw, qj);
+    pivot_scaled = select(found, pivot_scaled, qs);
+    // The pivot is decided on the weight as given: a tiny w > 0 beside huge ones scales to 0.
+    found = hn::Or(found, hn::Gt(wraw, hn::Zero(d)));
+    const V c = hn::Mul(wj, rsqrt(dot(qs, qs)));
+    const V cs = hn::IfThenElse(dot_negative(qs, pivot_scaled, qj, pivot_raw), hn::Neg(c), c);
+    sum = {hn::MulAdd(cs, qs.x, sum.x), hn::MulAdd(cs, qs.y, sum.y), hn::MulAdd(cs, qs.z, sum.z),
+           hn::MulAdd(cs, qs.w, sum.w)};
+  }
+  const M bad = hn::Not(ok);
+  store_quat(poison(bad, fast_unit_of_scaled(safe_scaled(sum))), o);
+  store_status(bad, s);
+}
+
 int BlendQlb(std::size_t n, std::size_t k, const float* q, const float* w, float* out, std::uint8_t* status) {
   if (k == 0) {  // empty influence set: DOMAIN_ERROR for every element (EDGE-9)
     for (std::size_t i = 0; i < n * 4; ++i) out[i] = std::numeric_limits<float>::quiet_NaN();
     std::memset(status, RC_DOMAIN_ERROR, n);
     return 0;
   }
-  return for_blend_blocks(n, k, q, w, out, status, [k](const float* bq, const float* bw, float* o, std::uint8_t* s) {
-    const D d;
-    M ok;
-    const V ws = weight_scale(bw, k, &ok);
-    Quat sum{hn::Zero(d), hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-    Quat pivot_raw = sum, pivot_scaled = sum;
-    M found = hn::Ne(ws, ws);  // all false
-    for (std::size_t j = 0; j < k; ++j) {
-      const Quat qj = gather_quat(bq, k, j);
-      const V wraw = gather(bw, k, j, 1, 0);
-      const V wj = hn::Mul(wraw, ws);
-      ok = hn::And(ok, is_rotation(qj));
-      const Quat qs = safe_scaled(qj);
-      pivot_raw = select(found, pivot_raw, qj);
-      pivot_scaled = select(found, pivot_scaled, qs);
-      // The pivot is decided on the weight as given: a tiny w > 0 beside huge ones scales to 0.
-      found = hn::Or(found, hn::Gt(wraw, hn::Zero(d)));
-      const V c = hn::Mul(wj, rsqrt(dot(qs, qs)));
-      const V cs = hn::IfThenElse(dot_negative(qs, pivot_scaled, qj, pivot_raw), hn::Neg(c), c);
-      sum = {hn::MulAdd(cs, qs.x, sum.x), hn::MulAdd(cs, qs.y, sum.y), hn::MulAdd(cs, qs.z, sum.z),
-             hn::MulAdd(cs, qs.w, sum.w)};
-    }
-    const M bad = hn::Not(ok);
-    store_quat(poison(bad, fast_unit_of_scaled(safe_scaled(sum))), o);
-    store_status(bad, s);
-  });
+  std::size_t done = 0;
+  if (k == 4) {
+    // One block per step: two QLB blocks (16 live vectors of influences each) spill registers.
+    done = fast_blocks<1>(
+        n, out, status, [&](std::size_t i) ROTORCERT_SIMD_INLINE { return qlb4_fast(q + 16 * i, w + 4 * i); },
+        [&](std::size_t i) { qlb_block(4, q + 16 * i, w + 4 * i, out + 4 * i, status + i); });
+  }
+  return for_blend_blocks(n - done, k, q + 4 * k * done, w + k * done, out + 4 * done, status + done,
+                          [k](const float* bq, const float* bw, float* o, std::uint8_t* s) {
+                            if (k == 4) {
+                              const FastBlock r = qlb4_fast(bq, bw);
+                              if (hn::AllTrue(D(), r.ordinary)) return store_fast(r, o, s);
+                            }
+                            qlb_block(k, bq, bw, o, s);
+                          });
 }
 
 /// LOGBLEND-1: q_p exp(sum (w_j/W) log(align(q_p^-1 q_j))), align = negate iff the w

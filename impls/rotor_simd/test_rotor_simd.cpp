@@ -7,7 +7,9 @@
 // a few far extrapolations), in calls of n = 1, 7, 64 and 1000 elements (tails included) and
 // n = 0. The worst error per op per target must be within the STRICT bar of the clause's
 // tolerance class (spec/clauses.json); it is printed in eps units with its input in hexfloat.
-// The reference results are computed once and shared by all targets.
+// The reference results are computed once and shared by all targets. Those inputs put an edge
+// case into nearly every block, so a second set (RotorSimdFastPaths) is ordinary in every lane,
+// to exercise the fast paths of slerp, nlerp and QLB (k = 4).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -818,6 +820,337 @@ TEST(RotorSimdEdges, IdentityAndTies) {
     }
     ops().slerp(1, one.data(), minus_one.data(), &half, o, &s);
     EXPECT_EQ(F4({o[0], o[1], o[2], o[3]}), one);
+  }
+}
+
+
+// ---- the fast paths (rotor_simd.cpp section 2d) ------------------------------------------------
+//
+// The inputs above put an edge case into nearly every block, so their blocks mostly take the
+// general kernels. The inputs here are ordinary in EVERY lane (unit quaternions rounded to
+// binary32, hemisphere dots away from 0, t in [0, 1], positive weights), so every block, the
+// padded tails included, takes the slerp / nlerp / QLB (k = 4) fast paths: their polynomial
+// slerp, their lane order and their exactness for identities are checked here.
+
+struct OrdinaryPairs {
+  std::vector<F4> a, b;
+  std::vector<float> t;
+  std::vector<bool> exact_identity;  // a = b' = +-1: the result must be exactly (0, 0, 0, 1)
+};
+
+/// |a.b| of the float inputs, in double (exact for binary32 products and these sums' sizes).
+double abs_dot(const F4& a, const F4& b) {
+  double s = 0;
+  for (int i = 0; i < 4; ++i) s += double(a[i]) * double(b[i]);
+  return std::fabs(s);
+}
+
+const OrdinaryPairs& ordinary_pairs() {
+  static const OrdinaryPairs s = [] {
+    OrdinaryPairs p;
+    Rng r;
+    r.g.seed(0xfa57);
+    for (int i = 0; p.a.size() < 1500; ++i) {
+      const auto a = unit_double(r);
+      std::array<double, 4> b;
+      bool identity = false;
+      switch (i % 6) {
+        case 0:
+        case 1: b = unit_double(r); break;                                       // any angle, any sign
+        case 2: b = near(r, a, std::pow(10.0, r.uniform(-7, -2))); break;        // EDGE-2 small angles
+        case 3:                                                                  // near antipode: flip
+          b = near(r, a, std::pow(10.0, r.uniform(-4, -0.3)));
+          for (double& x : b) x = -x;
+          break;
+        case 4: b = near(r, a, r.uniform(2.8, std::numbers::pi - 1e-4)); break;  // Omega near pi/2
+        default: b = a; break;                                                   // Omega = 0
+      }
+      F4 fa = to_f4(a), fb = to_f4(b);
+      if (i % 6 == 5 && i % 4 == 1) {  // identities, and an exact antipode of one (EDGE-1, EDGE-3)
+        fa = {0, 0, 0, 1};
+        fb = (i % 8 == 1) ? F4{0, 0, 0, -1} : F4{0, 0, 0, 1};
+        identity = true;
+      }
+      if (abs_dot(fa, fb) < 0x1p-16) continue;  // the fast paths leave near-ties to the general kernels
+      static const float special[] = {0.0f, 1.0f, 0.5f, 0x1p-30f, 1.0f - 0x1p-24f};
+      p.t.push_back(i % 7 == 0 ? special[(i / 7) % 5] : static_cast<float>(r.uniform(0, 1)));
+      p.a.push_back(fa);
+      p.b.push_back(fb);
+      p.exact_identity.push_back(identity);
+    }
+    return p;
+  }();
+  return s;
+}
+
+/// Ordinary pairs that are all keyframe neighbours, Omega <= pi/4 (rotation angles up to a
+/// quarter turn, either sign of b), so that whole blocks take slerp's shorter series without
+/// angle halving; includes angles just below pi/4, tiny ones and exact identities.
+const OrdinaryPairs& neighbour_pairs() {
+  static const OrdinaryPairs s = [] {
+    OrdinaryPairs p;
+    Rng r;
+    r.g.seed(0x2e1);
+    for (int i = 0; p.a.size() < 1500; ++i) {
+      const auto a = unit_double(r);
+      const double angle = i % 5 == 0   ? std::numbers::pi / 2 * (1 - std::pow(10.0, r.uniform(-6, -3)))
+                           : i % 5 == 1 ? std::pow(10.0, r.uniform(-7, -2))
+                                        : r.uniform(0, std::numbers::pi / 2);
+      auto b = near(r, a, angle);
+      if (r.pick(2))
+        for (double& x : b) x = -x;
+      F4 fa = to_f4(a), fb = to_f4(b);
+      const bool identity = i % 37 == 3;
+      if (identity) fa = {0, 0, 0, 1}, fb = {0, 0, 0, i % 2 ? -1.0f : 1.0f};
+      static const float special[] = {0.0f, 1.0f, 0.5f, 0x1p-30f, 1.0f - 0x1p-24f};
+      p.t.push_back(i % 7 == 0 ? special[(i / 7) % 5] : static_cast<float>(r.uniform(0, 1)));
+      p.a.push_back(fa);
+      p.b.push_back(fb);
+      p.exact_identity.push_back(identity);
+    }
+    return p;
+  }();
+  return s;
+}
+
+void check_interp_fast(const char* op, InterpFn fn, ref::Result<RQ> (*reference)(const RQ&, const RQ&, const Real&),
+                       const OrdinaryPairs& p, const char* set) {
+  TargetGuard guard;
+  const std::size_t n = p.a.size();
+  std::vector<RQ> want(n);
+  for (std::size_t i = 0; i < n; ++i) want[i] = reference(rq(p.a[i].data()), rq(p.b[i].data()), Real(double(p.t[i]))).value;
+  for (const std::string& target : targets()) {
+    ASSERT_EQ(impl().select_target(target.c_str()), 0);
+    std::vector<float> out(n * 4, -7.0f);
+    std::vector<std::uint8_t> st(n, 99);
+    in_chunks(n, [&](std::size_t i, std::size_t m) {
+      ASSERT_EQ(fn(m, p.a[i].data(), p.b[i].data(), &p.t[i], &out[i * 4], &st[i]), 0);
+    });
+    expect_all_ok(st, op, target);
+    Worst w;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string in = "a=" + hex(p.a[i].data(), 4) + " b=" + hex(p.b[i].data(), 4) + " t=" + hex(&p.t[i], 1);
+      w.see(quat_error(&out[i * 4], want[i]), in);
+      if (p.exact_identity[i]) {
+        EXPECT_EQ(F4({out[i * 4], out[i * 4 + 1], out[i * 4 + 2], out[i * 4 + 3]}), F4({0, 0, 0, 1}))
+            << op << " " << target << " " << in << " -> " << hex(&out[i * 4], 4);
+      }
+      // SLERP-3 / NLERP-1 endpoints carry the sign: t = 0 is a, t = 1 is b' (not -b').
+      if (p.t[i] == 0.0f || p.t[i] == 1.0f) {
+        const RQ end = p.t[i] == 0.0f ? rq(p.a[i].data()) : want[i];
+        EXPECT_GT(ref::dot(rq(&out[i * 4]), end), 0) << op << " " << target << " " << in;
+      }
+    }
+    report(op, target + "/" + set, w, "eps16");
+  }
+}
+
+TEST(RotorSimdFastPaths, Slerp) {
+  RC_CLAUSE("SLERP-1");
+  RC_CLAUSE("SLERP-3");
+  RC_CLAUSE("EDGE-1");
+  RC_CLAUSE("EDGE-2");
+  RC_CLAUSE("EDGE-3");
+  check_interp_fast("slerp", ops().slerp, &clause::SLERP_1_slerp<Real>, ordinary_pairs(), "fast");
+  check_interp_fast("slerp", ops().slerp, &clause::SLERP_1_slerp<Real>, neighbour_pairs(), "fast-near");
+}
+
+TEST(RotorSimdFastPaths, Nlerp) {
+  RC_CLAUSE("NLERP-1");
+  RC_CLAUSE("EDGE-1");
+  RC_CLAUSE("EDGE-2");
+  check_interp_fast("nlerp", ops().nlerp, &clause::NLERP_1_nlerp<Real>, ordinary_pairs(), "fast");
+  check_interp_fast("nlerp", ops().nlerp, &clause::NLERP_1_nlerp<Real>, neighbour_pairs(), "fast-near");
+}
+
+TEST(RotorSimdFastPaths, BlendQlbFourInfluences) {
+  RC_CLAUSE("QLB-1");
+  RC_CLAUSE("EDGE-1");
+  TargetGuard guard;
+  constexpr std::size_t k = 4, n = 1000;
+  Rng r;
+  r.g.seed(0xb1e4d);
+  std::vector<float> q, w;
+  std::vector<bool> identity(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto center = unit_double(r);
+    const double spread = i % 3 == 0 ? 3.0 : i % 3 == 1 ? 0.5 : 1e-4;
+    identity[i] = i % 50 == 7;  // a weighted sum of +-identities: exactly (0, 0, 0, 1) out
+    F4 first{};
+    for (std::size_t j = 0; j < k; ++j) {
+      F4 f;
+      do {
+        auto qj = near(r, center, r.uniform(0, spread));
+        if (r.pick(2))
+          for (double& x : qj) x = -x;
+        f = identity[i] ? F4{0, 0, 0, r.pick(2) ? 1.0f : -1.0f} : to_f4(qj);
+        if (identity[i] && j == 0) f[3] = 1.0f;
+      } while (j > 0 && abs_dot(f, first) < 0x1p-16);  // hemisphere signs clear of ties
+      if (j == 0) first = f;
+      q.insert(q.end(), f.begin(), f.end());
+      w.push_back(static_cast<float>(r.uniform(0.05, 1)));
+    }
+  }
+  std::vector<RQ> want(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<RQ> qs;
+    std::vector<Real> ws;
+    for (std::size_t j = 0; j < k; ++j) {
+      qs.push_back(rq(&q[(i * k + j) * 4]));
+      ws.push_back(Real(double(w[i * k + j])));
+    }
+    want[i] = clause::QLB_1_blend<Real>(qs, ws).value;
+  }
+  for (const std::string& target : targets()) {
+    ASSERT_EQ(impl().select_target(target.c_str()), 0);
+    std::vector<float> out(n * 4);
+    std::vector<std::uint8_t> st(n);
+    in_chunks(n, [&](std::size_t i, std::size_t m) {
+      ASSERT_EQ(ops().blend_qlb(m, k, &q[i * k * 4], &w[i * k], &out[i * 4], &st[i]), 0);
+    });
+    expect_all_ok(st, "qlb", target);
+    Worst worst;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string in = "q=" + hex(&q[i * k * 4], 4 * int(k)) + " w=" + hex(&w[i * k], int(k));
+      worst.see(quat_error(&out[i * 4], want[i]), in);
+      if (identity[i]) {
+        EXPECT_EQ(F4({out[i * 4], out[i * 4 + 1], out[i * 4 + 2], out[i * 4 + 3]}), F4({0, 0, 0, 1}))
+            << target << " " << in << " -> " << hex(&out[i * 4], 4);
+      }
+    }
+    report("qlb", target + "/fast/k4", worst, "eps32");
+  }
+}
+
+// Blocks of ordinary lanes with one unusual lane in most blocks (every fifth element; blocks
+// are 4, 8 or 16 elements): the fast path must decline such a block as a whole, and the
+// general kernel must then give every lane its defined result, the ordinary ones included.
+// Unusual: domain errors (EDGE-6, EDGE-7, EDGE-9), extrapolation, non-unit inputs, exact ties.
+
+TEST(RotorSimdFastPaths, InterpBlocksWithOneUnusualLane) {
+  RC_CLAUSE("SLERP-1");
+  RC_CLAUSE("SLERP-4");
+  RC_CLAUSE("NLERP-1");
+  RC_CLAUSE("EDGE-3");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  TargetGuard guard;
+  const OrdinaryPairs& ord = ordinary_pairs();
+  const std::size_t n = 400;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  std::vector<F4> a(ord.a.begin(), ord.a.begin() + n), b(ord.b.begin(), ord.b.begin() + n);
+  std::vector<float> t(ord.t.begin(), ord.t.begin() + n);
+  std::vector<bool> domain_error(n, false), tie(n, false);
+  for (std::size_t i = 2; i < n; i += 5) {
+    switch ((i / 5) % 7) {
+      case 0: t[i] = nan, domain_error[i] = true; break;
+      case 1: a[i] = {0, -0.0f, 0, 0}, domain_error[i] = true; break;
+      case 2: b[i] = {inf, 0, 0, 1}, domain_error[i] = true; break;
+      case 3: t[i] = (i % 2) ? 1.5f : -0.25f; break;  // extrapolation
+      case 4: a[i] = rescale(a[i], 40); break;        // non-unit
+      case 5: b[i] = {-a[i][1], a[i][0], -a[i][3], a[i][2]}, tie[i] = true; break;  // a.b = 0 exactly
+      default: b[i] = rescale(b[i], -70); break;
+    }
+  }
+  for (const bool slerp : {true, false}) {
+    const InterpFn fn = slerp ? ops().slerp : ops().nlerp;
+    const auto reference = slerp ? &clause::SLERP_1_slerp<Real> : &clause::NLERP_1_nlerp<Real>;
+    std::vector<RQ> want(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (domain_error[i]) continue;
+      const RQ qa = rq(a[i].data()), qb = rq(b[i].data());
+      const Real ti = Real(double(t[i]));
+      want[i] = tie[i] ? tie_expected(slerp, qa, qb, ti) : reference(qa, qb, ti).value;
+    }
+    for (const std::string& target : targets()) {
+      ASSERT_EQ(impl().select_target(target.c_str()), 0);
+      std::vector<float> out(n * 4, -7.0f);
+      std::vector<std::uint8_t> st(n, 99);
+      in_chunks(n, [&](std::size_t i, std::size_t m) {
+        ASSERT_EQ(fn(m, a[i].data(), b[i].data(), &t[i], &out[i * 4], &st[i]), 0);
+      });
+      Worst w;
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::string in = "a=" + hex(a[i].data(), 4) + " b=" + hex(b[i].data(), 4) + " t=" + hex(&t[i], 1);
+        EXPECT_EQ(st[i], domain_error[i] ? RC_DOMAIN_ERROR : RC_OK) << target << " " << in;
+        if (domain_error[i]) {
+          EXPECT_TRUE(all_nan(&out[i * 4], 4)) << target << " " << in;
+        } else {
+          w.see(quat_error(&out[i * 4], want[i]), in);
+        }
+      }
+      report(slerp ? "slerp" : "nlerp", target + "/mixed", w, "eps16");
+    }
+  }
+}
+
+TEST(RotorSimdFastPaths, QlbBlocksWithOneUnusualLane) {
+  RC_CLAUSE("QLB-1");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("EDGE-9");
+  TargetGuard guard;
+  constexpr std::size_t k = 4, n = 400;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  Rng r;
+  r.g.seed(0x0dd1a9e);
+  std::vector<float> q, w;
+  for (std::size_t i = 0; i < n; ++i) {  // ordinary: unit influences near a centre, weights > 0
+    const auto center = unit_double(r);
+    for (std::size_t j = 0; j < k; ++j) {
+      const F4 f = to_f4(near(r, center, r.uniform(0, 1.0)));
+      q.insert(q.end(), f.begin(), f.end());
+      w.push_back(static_cast<float>(r.uniform(0.05, 1)));
+    }
+  }
+  std::vector<bool> domain_error(n, false);
+  for (std::size_t i = 2; i < n; i += 5) {
+    float* qi = &q[i * k * 4];
+    float* wi = &w[i * k];
+    switch ((i / 5) % 10) {
+      case 0: wi[1] = -0.5f, domain_error[i] = true; break;
+      case 1: wi[2] = nan, domain_error[i] = true; break;
+      case 2: wi[0] = inf, domain_error[i] = true; break;
+      case 3: std::fill(qi + 12, qi + 16, 0.0f), wi[3] = 0, domain_error[i] = true; break;  // zero q, weight 0
+      case 4: qi[4] = nan, domain_error[i] = true; break;
+      case 5: std::fill(wi, wi + k, 0.0f), domain_error[i] = true; break;
+      case 6: wi[0] = 0; break;                                   // the pivot is influence 1
+      case 7: wi[0] = -0.0f; break;                               // -0 counts as 0
+      case 8: for (int c = 8; c < 12; ++c) qi[c] = std::ldexp(qi[c], 50); break;  // non-unit
+      default: for (std::size_t j = 0; j < k; ++j) wi[j] *= 1e30f; break;          // huge weights
+    }
+  }
+  std::vector<RQ> want(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (domain_error[i]) continue;
+    std::vector<RQ> qs;
+    std::vector<Real> ws;
+    for (std::size_t j = 0; j < k; ++j) {
+      qs.push_back(rq(&q[(i * k + j) * 4]));
+      ws.push_back(Real(double(w[i * k + j])));
+    }
+    want[i] = clause::QLB_1_blend<Real>(qs, ws).value;
+  }
+  for (const std::string& target : targets()) {
+    ASSERT_EQ(impl().select_target(target.c_str()), 0);
+    std::vector<float> out(n * 4, -7.0f);
+    std::vector<std::uint8_t> st(n, 99);
+    in_chunks(n, [&](std::size_t i, std::size_t m) {
+      ASSERT_EQ(ops().blend_qlb(m, k, &q[i * k * 4], &w[i * k], &out[i * 4], &st[i]), 0);
+    });
+    Worst worst;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string in = "q=" + hex(&q[i * k * 4], 4 * int(k)) + " w=" + hex(&w[i * k], int(k));
+      EXPECT_EQ(st[i], domain_error[i] ? RC_DOMAIN_ERROR : RC_OK) << target << " " << in;
+      if (domain_error[i]) {
+        EXPECT_TRUE(all_nan(&out[i * 4], 4)) << target << " " << in;
+      } else {
+        worst.see(quat_error(&out[i * 4], want[i]), in);
+      }
+    }
+    report("qlb", target + "/mixed/k4", worst, "eps32");
   }
 }
 

@@ -12,35 +12,14 @@
 #include <rotorcert/report/render.hpp>
 
 #include "common.hpp"
+#include "markup.hpp"
+#include "render_speed.hpp"
 
 namespace rotorcert::report {
 
 namespace {
 
 using namespace detail;
-
-std::string esc(const std::string& text) {
-  std::string s;
-  s.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': s += "&amp;"; break;
-      case '<': s += "&lt;"; break;
-      case '>': s += "&gt;"; break;
-      case '"': s += "&quot;"; break;
-      case '\'': s += "&#39;"; break;
-      default: s += c;
-    }
-  }
-  return s;
-}
-
-/// A number for SVG coordinates.
-std::string px(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
 
 bool is_expected_failure(const json& clause) {
   return clause.contains("expected_failure") && clause["expected_failure"].is_string();
@@ -110,7 +89,7 @@ table.clause-matrix tbody th, table.levels-matrix tbody th { white-space: nowrap
 figure { margin: 0; }
 figcaption { font-weight: 600; font-size: 13.5px; margin-bottom: 2px; }
 svg text { font-family: system-ui, -apple-system, "Segoe UI", Roboto, Arial, sans-serif; fill: #38414d; }
-svg .bar { fill: #4a78c2; } svg .bar.double { fill: #2f9b8f; } svg .grid { stroke: #e3e7ec; } svg .axis { stroke: #7d8794; }
+svg .bar { fill: #4a78c2; } svg .bar.double { fill: #2f9b8f; } svg .bar.base { fill: #9aa3ad; } svg .grid { stroke: #e3e7ec; } svg .axis { stroke: #7d8794; }
 nav ul { columns: 3 18em; margin: .3em 0; padding-left: 1.2em; }
 section.impl { margin-top: 2.5em; }
 tr[hidden] { display: none; }
@@ -190,12 +169,14 @@ void render_header(std::ostream& out, const json& r) {
 }
 
 void render_nav(std::ostream& out, const json& r) {
-  out << "<nav><ul>\n<li><a href=\"#overview\">Overview</a></li>\n"
-         "<li><a href=\"#accuracy-across\">Accuracy across implementations</a></li>\n";
+  out << "<nav><ul>\n";
+  if (!arr(r, "implementations").empty())
+    out << "<li><a href=\"#overview\">Overview</a></li>\n<li><a href=\"#accuracy-across\">Accuracy across "
+           "implementations</a></li>\n";
   for (const json& cert : arr(r, "implementations"))
     out << "<li><a href=\"#" << esc(anchor(cert)) << "\">" << esc(table_label(cert)) << "</a></li>\n";
   for (const auto& [name, value] : obj_at(r, "sections").items())
-    out << "<li><a href=\"#section-" << esc(name) << "\">" << (name == "mutants" ? "Mutants" : esc(name))
+    out << "<li><a href=\"#section-" << esc(name) << "\">" << (name == "mutants" ? "Mutants" : name == "render" ? "Render check" : name == "speed" ? "Speed" : esc(name))
         << "</a></li>\n";
   out << "</ul></nav>\n";
 }
@@ -649,6 +630,10 @@ void render_sections(std::ostream& out, const json& r) {
       render_render(out, value);
       continue;
     }
+    if (name == "speed" && value.is_object()) {
+      render_speed_html(out, value);
+      continue;
+    }
     out << "<section class=\"extra\" id=\"section-" << esc(name) << "\">\n<h2>" << esc(name)
         << "</h2>\n<pre class=\"json\">" << esc(dump(value, 2)) << "</pre>\n</section>\n";
   }
@@ -666,8 +651,11 @@ std::string render_html(const nlohmann::json& report) {
   render_nav(out, report);
   out << "<div class=\"controls\"><label><input type=\"checkbox\" id=\"only-nonpass\"> show only non-PASS "
          "clauses</label> <span id=\"filter-status\" class=\"muted\"></span></div>\n";
-  render_overview(out, report);
-  render_accuracy_across(out, report);
+  // A report without certificates (`rotorcert bench`) has no overview.
+  if (!arr(report, "implementations").empty()) {
+    render_overview(out, report);
+    render_accuracy_across(out, report);
+  }
   const json& platform_env = obj_at(obj_at(report, "platform"), "fp_environment");
   for (const json& cert : arr(report, "implementations")) render_certificate(out, cert, platform_env);
   render_sections(out, report);

@@ -7,58 +7,14 @@
 #include <rotorcert/report/render.hpp>
 
 #include "common.hpp"
+#include "markup.hpp"
+#include "render_speed.hpp"
 
 namespace rotorcert::report {
 
 namespace {
 
 using namespace detail;
-
-/// Plain text in a table cell: pipes escaped, newlines as <br>, '<' escaped so that no text is
-/// taken for an HTML tag.
-std::string cell(const std::string& text) {
-  std::string s;
-  for (char c : text) {
-    if (c == '|') s += "\\|";
-    else if (c == '<') s += "\\<";
-    else if (c == '\n') s += "<br>";
-    else if (c != '\r') s += c;
-  }
-  return s;
-}
-
-/// Verbatim text as a code span (hexfloats, commands): a fence longer than any run of backticks
-/// inside; pipes still escaped, which GFM requires even inside code spans in tables.
-std::string code(const std::string& text) {
-  if (text.empty()) return "";
-  std::size_t run = 0, longest = 0;
-  for (char c : text) {
-    run = c == '`' ? run + 1 : 0;
-    longest = std::max(longest, run);
-  }
-  const std::string fence(longest + 1, '`');
-  const bool pad = text.front() == '`' || text.back() == '`';
-  std::string body;
-  for (char c : text) {
-    if (c == '|') body += "\\|";
-    else if (c == '\n') body += ' ';
-    else if (c != '\r') body += c;
-  }
-  return fence + (pad ? " " : "") + body + (pad ? " " : "") + fence;
-}
-
-void row(std::ostream& out, const std::vector<std::string>& cells) {
-  out << "|";
-  for (const std::string& c : cells) out << " " << c << " |";
-  out << "\n";
-}
-
-void header(std::ostream& out, const std::vector<std::string>& cells) {
-  row(out, cells);
-  out << "|";
-  for (std::size_t i = 0; i < cells.size(); ++i) out << "---|";
-  out << "\n";
-}
 
 std::string outcome_cell(const json& clause) {
   std::string s = str(clause, "outcome");
@@ -348,6 +304,10 @@ void render_sections(std::ostream& out, const json& r) {
       render_render(out, value);
       continue;
     }
+    if (name == "speed" && value.is_object()) {
+      render_speed_markdown(out, value);
+      continue;
+    }
     out << "## " << cell(name) << "\n\n";
     std::string text = dump(value, 2);
     std::size_t run = 0, longest = 0;
@@ -365,8 +325,10 @@ void render_sections(std::ostream& out, const json& r) {
 std::string render_markdown(const nlohmann::json& report) {
   std::ostringstream out;
   render_header(out, report);
-  render_overview(out, report);
-  render_accuracy_overview(out, report);
+  if (!arr(report, "implementations").empty()) {  // `rotorcert bench` certifies nothing
+    render_overview(out, report);
+    render_accuracy_overview(out, report);
+  }
   const json& platform_env = obj_at(obj_at(report, "platform"), "fp_environment");
   for (const json& cert : arr(report, "implementations")) render_certificate(out, cert, platform_env);
   render_sections(out, report);

@@ -1,0 +1,250 @@
+// sections.speed from rotorcert_bench's JSON (speed.hpp).
+#include <rotorcert/report/speed.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+namespace rotorcert::report {
+
+namespace {
+
+using json = nlohmann::json;
+
+/// The label "impl=glm_quat scalar=float op=slerp n=4096 k=1 target=none" as key/value pairs.
+std::map<std::string, std::string> label_fields(const json& b) {
+  std::map<std::string, std::string> out;
+  std::istringstream in(b.value("label", std::string()));
+  std::string word;
+  while (in >> word) {
+    const auto eq = word.find('=');
+    if (eq != std::string::npos) out[word.substr(0, eq)] = word.substr(eq + 1);
+  }
+  return out;
+}
+
+std::optional<double> number(const json& b, const char* key) {
+  if (!b.contains(key) || !b[key].is_number()) return std::nullopt;
+  const double v = b[key].get<double>();
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+json or_null(std::optional<double> v) { return v ? json(*v) : json(nullptr); }
+
+/// Benchmarks that ran (not aggregates, not errors), by name.
+std::map<std::string, json> runs_by_name(const json& bench) {
+  std::map<std::string, json> out;
+  for (const json& b : bench.at("benchmarks")) {
+    if (!b.is_object() || b.value("run_type", "iteration") != "iteration") continue;
+    if (b.value("error_occurred", false)) continue;
+    out[b.value("name", "")] = b;
+  }
+  return out;
+}
+
+/// The method a frame row stands for in the paper's terms (Figure 1's QLB, DQB, GA rotor).
+std::string method_name(const std::string& impl, const std::string& technique) {
+  if ((impl == "glm_quat" || impl == "eigen_quat") && technique == "LBS") return "QLB";
+  if (impl == "dq" && technique == "DQS") return "DQB";
+  if (impl == "rotor_m1") return "rotor Method 1";
+  if (impl == "rotor_m2") return "rotor Method 2";
+  if (impl == "rotor_simd") return "SIMD rotor";
+  if (impl == "motor_pga") return "PGA motor";
+  if (impl == "paper_literal") return "paper as printed";
+  return impl;
+}
+
+json machine_json(const json& context) {
+  json m = json::object();
+  for (const char* k : {"cpu_model", "num_cpus", "mhz_per_cpu", "caches", "load_avg", "hwy_target", "compiler",
+                        "library_build_type", "date"})
+    if (context.contains(k)) m[k] = context[k];
+  return m;
+}
+
+}  // namespace
+
+json speed_section(const json& bench, const std::vector<json>& certificates, const std::string& source) {
+  if (!bench.is_object() || !bench.contains("benchmarks") || !bench["benchmarks"].is_array())
+    throw std::runtime_error(source + ": not a Google Benchmark JSON document (no \"benchmarks\" array)");
+  const json context = bench.value("context", json::object());
+  const auto runs = runs_by_name(bench);
+  const auto find = [&](const std::string& name) -> const json* {
+    const auto it = runs.find(name);
+    return it == runs.end() ? nullptr : &it->second;
+  };
+
+  json section = {{"source", source},
+                  {"quick", context.value("rotorcert_quick", "false") == "true"},
+                  {"date", context.value("date", "")},
+                  {"machine", machine_json(context)}};
+  json notes = json::array();
+
+  // Roofs.
+  const auto roof = [&](const char* name, const char* counter) -> std::optional<double> {
+    const json* b = find(name);
+    return b ? number(*b, counter) : std::nullopt;
+  };
+  const auto flops_f = roof("roofline/peak_fma/float", "flops_per_second");
+  const auto flops_d = roof("roofline/peak_fma/double", "flops_per_second");
+  const auto bw_read = roof("roofline/bandwidth/read", "bytes_per_second");
+  const auto bw_triad = roof("roofline/bandwidth/triad", "bytes_per_second");
+  section["roofs"] = {{"peak_flops", {{"float", or_null(flops_f)}, {"double", or_null(flops_d)}}},
+                      {"bandwidth", {{"read", or_null(bw_read)}, {"triad", or_null(bw_triad)}}}};
+  if (!flops_f || !flops_d || !bw_triad) notes.push_back("roofline benchmarks missing: no roofline fractions");
+
+  // Baselines, and their ns/element by (name, scalar, n) for the ratios of every op.
+  json baselines = json::array();
+  std::map<std::string, double> baseline_ns;  // "glm_slerp/float/4096" -> ns
+  for (const auto& [name, b] : runs) {
+    if (name.rfind("baseline/", 0) != 0) continue;
+    auto f = label_fields(b);
+    const auto ns = number(b, "ns_per_element");
+    const std::string base = name.substr(9, name.find('/', 9) - 9);
+    if (!ns) continue;
+    baselines.push_back({{"name", base}, {"scalar", f["scalar"]}, {"n", std::stoll(f["n"])}, {"ns_per_element", *ns}});
+    baseline_ns[base + "/" + f["scalar"] + "/" + f["n"]] = *ns;
+  }
+  section["baselines"] = baselines;
+
+  // Ops, with the roofline.
+  json ops = json::array();
+  for (const auto& [name, b] : runs) {
+    if (name.rfind("op/", 0) != 0) continue;
+    auto f = label_fields(b);
+    const auto ns = number(b, "ns_per_element");
+    const auto ips = number(b, "items_per_second");
+    if (!ns || !ips) continue;
+    const auto flops = number(b, "flops_per_element");
+    const auto bytes = number(b, "bytes_per_element");
+    const long long n = std::stoll(f["n"]);
+    const auto peak = f["scalar"] == "float" ? flops_f : flops_d;
+    std::optional<double> compute, memory;
+    if (peak && flops && *flops > 0) compute = *peak / *flops;
+    if (n >= 65536 && bw_triad && bytes && *bytes > 0) memory = *bw_triad / *bytes;
+    std::optional<double> bound;
+    std::string bound_kind;
+    if (compute && (!memory || *compute <= *memory)) bound = compute, bound_kind = "compute";
+    else if (memory) bound = memory, bound_kind = "memory";
+    json row = {{"impl", f["impl"]}, {"scalar", f["scalar"]}, {"op", f["op"]}, {"n", n},
+                {"k", f.count("k") ? std::stoll(f["k"]) : 1}, {"simd_target", f["target"]},
+                {"ns_per_element", *ns}, {"items_per_second", *ips}, {"flops_per_element", or_null(flops)},
+                {"bytes_per_element", or_null(bytes)}, {"bound", bound ? json(bound_kind) : json(nullptr)},
+                {"attainable_per_second", or_null(bound)},
+                {"roofline_fraction", bound ? json(*ips / *bound) : json(nullptr)}};
+    for (const char* base : {"glm_slerp", "glm_mix"}) {
+      const auto it = baseline_ns.find(std::string(base) + "/" + f["scalar"] + "/" + f["n"]);
+      row[std::string("vs_") + base] = it == baseline_ns.end() ? json(nullptr) : json(it->second / *ns);
+    }
+    ops.push_back(row);
+  }
+  section["ops"] = ops;
+
+  // Targets.
+  json targets = json::array();
+  for (const SpeedTarget& t : kSpeedTargets) {
+    const json* k = find(t.kernel);
+    const json* base = find(t.baseline);
+    json row = {{"id", t.id}, {"what", t.what}, {"kernel", t.kernel}, {"baseline", t.baseline}, {"n", 4096},
+                {"target", t.target}};
+    const auto kn = k ? number(*k, "ns_per_element") : std::nullopt;
+    const auto bn = base ? number(*base, "ns_per_element") : std::nullopt;
+    if (kn && bn) {
+      const double ratio = *bn / *kn;
+      row["ratio"] = ratio;
+      row["met"] = ratio >= t.target;
+      row["missed_by"] = ratio >= t.target ? json(nullptr) : json(t.target / ratio);
+    } else {
+      row["ratio"] = nullptr;
+      row["met"] = nullptr;
+      row["missed_by"] = nullptr;
+      notes.push_back(std::string("target ") + t.id + ": " + (kn ? t.baseline : t.kernel) + " was not run");
+    }
+    targets.push_back(row);
+  }
+  section["targets"] = targets;
+
+  // Frame pipeline; the pose part alone (frame_pose/: no vertices) beside each whole frame.
+  std::map<std::string, double> pose_us;
+  for (const auto& [name, b] : runs)
+    if (name.rfind("frame_pose/", 0) == 0) {
+      auto f = label_fields(b);
+      if (const auto us = number(b, "us_per_frame"))
+        pose_us[f["scene"] + "|" + f["impl"] + "|" + f["scalar"] + "|" + f["technique"]] = *us;
+    }
+  json frames = json::array();
+  std::map<std::pair<std::string, std::string>, std::map<std::string, std::pair<std::string, double>>> by_scene;
+  for (const auto& [name, b] : runs) {
+    if (name.rfind("frame/", 0) != 0) continue;
+    auto f = label_fields(b);
+    const auto us = number(b, "us_per_frame");
+    if (!us) continue;
+    const std::string method = method_name(f["impl"], f["technique"]);
+    frames.push_back({{"scene", f["scene"]}, {"impl", f["impl"]}, {"scalar", f["scalar"]}, {"technique", f["technique"]},
+                      {"method", method}, {"us_per_frame", *us}, {"joints", or_null(number(b, "joints"))},
+                      {"vertices", or_null(number(b, "vertices"))}});
+    const auto pose = pose_us.find(f["scene"] + "|" + f["impl"] + "|" + f["scalar"] + "|" + f["technique"]);
+    frames.back()["pose_us"] = pose == pose_us.end() ? json(nullptr) : json(pose->second);
+    auto& m = by_scene[{f["scene"], f["scalar"]}];
+    const std::string key = f["impl"] + " " + f["technique"];
+    m[key] = {method, *us};
+  }
+  section["frames"] = frames;
+
+  // The paper's claim: GA rotors (Method 1, Method 2, the SIMD rotor; the fastest of them) take
+  // less time per frame than QLB (glm_quat LBS) and DQB (dq DQS).
+  json claim = json::array();
+  for (const auto& [key, m] : by_scene) {
+    const auto qlb = m.find("glm_quat LBS");
+    const auto dqb = m.find("dq DQS");
+    std::string rotor;
+    double rotor_us = INFINITY;
+    for (const auto& [impl_tech, v] : m)
+      if ((impl_tech.rfind("rotor_m1 ", 0) == 0 || impl_tech.rfind("rotor_m2 ", 0) == 0 ||
+           impl_tech.rfind("rotor_simd ", 0) == 0) &&
+          v.second < rotor_us)
+        rotor = impl_tech, rotor_us = v.second;
+    if (qlb == m.end() || dqb == m.end() || rotor.empty()) continue;
+    const double q = qlb->second.second, d = dqb->second.second;
+    claim.push_back({{"scene", key.first}, {"scalar", key.second}, {"qlb_us", q}, {"dqb_us", d}, {"rotor", rotor},
+                     {"rotor_us", rotor_us}, {"vs_qlb", q / rotor_us}, {"vs_dqb", d / rotor_us},
+                     {"holds", rotor_us < q && rotor_us < d}});
+  }
+  section["paper_claim"] = claim;
+
+  // Accuracy versus speed: the certificate's accuracy of each op beside its ns/element at 4096.
+  json avs = json::array();
+  std::map<std::string, const json*> op4096;
+  for (const json& r : ops)
+    if (r.at("n") == 4096) op4096[r.at("impl").get<std::string>() + "/" + r.at("scalar").get<std::string>() + "/" +
+                                 r.at("op").get<std::string>()] = &r;
+  for (const json& c : certificates) {
+    if (!c.is_object() || !c.contains("accuracy") || !c["accuracy"].is_array()) continue;
+    for (const json& a : c["accuracy"]) {
+      const std::string key = c.value("name", "") + "/" + c.value("scalar", "") + "/" + a.value("op", "");
+      const auto it = op4096.find(key);
+      if (it == op4096.end()) continue;
+      avs.push_back({{"impl", c.value("name", "")}, {"scalar", c.value("scalar", "")}, {"op", a.value("op", "")},
+                     {"n", 4096}, {"ns_per_element", it->second->at("ns_per_element")},
+                     {"max_eps", a.contains("max_eps") ? a["max_eps"] : json(nullptr)},
+                     {"p99_eps", a.contains("p99_eps") ? a["p99_eps"] : json(nullptr)}});
+    }
+  }
+  section["accuracy_vs_speed"] = avs;
+  if (certificates.empty()) notes.push_back("no certificates given: no accuracy-versus-speed chart");
+  const double load = context.contains("load_avg") && context["load_avg"].is_array() && !context["load_avg"].empty() &&
+                              context["load_avg"][0].is_number()
+                          ? context["load_avg"][0].get<double>()
+                          : 0.0;
+  if (load > context.value("num_cpus", 1) * 0.75)
+    notes.push_back("load average " + std::to_string(load).substr(0, 4) +
+                    " when the run began: other work shared the CPUs, absolute times are pessimistic (ratios within "
+                    "the run less so)");
+  section["notes"] = notes;
+  return section;
+}
+
+}  // namespace rotorcert::report

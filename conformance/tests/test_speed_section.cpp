@@ -1,0 +1,160 @@
+// The speed section (REPORT-2) computed from a Google Benchmark document built here by hand: the
+// expected numbers follow from REPORT-2's definitions applied to these inputs, not from the code.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <rotorcert/report/render.hpp>
+#include <rotorcert/report/speed.hpp>
+#include <rotorcert/testing/clause.hpp>
+
+namespace {
+
+using json = nlohmann::json;
+using rotorcert::report::speed_section;
+
+json op_run(const std::string& impl, const std::string& scalar, const std::string& op, int n, double ns, double flops,
+            double bytes) {
+  const std::string name = "op/" + op + "/" + impl + "/" + scalar + "/" + std::to_string(n);
+  return {{"name", name}, {"run_type", "iteration"}, {"ns_per_element", ns}, {"items_per_second", 1e9 / ns},
+          {"flops_per_element", flops}, {"bytes_per_element", bytes},
+          {"label", "impl=" + impl + " scalar=" + scalar + " op=" + op + " n=" + std::to_string(n) + " k=1 target=none"}};
+}
+json baseline_run(const std::string& base, const std::string& scalar, int n, double ns) {
+  return {{"name", "baseline/" + base + "/" + scalar + "/" + std::to_string(n)}, {"run_type", "iteration"},
+          {"ns_per_element", ns}, {"items_per_second", 1e9 / ns},
+          {"label", "impl=glm scalar=" + scalar + " op=x n=" + std::to_string(n) + " k=1 target=none"}};
+}
+json frame_run(const std::string& scene, const std::string& impl, const std::string& technique, double us) {
+  return {{"name", "frame/" + scene + "/" + impl + "/float/" + technique}, {"run_type", "iteration"}, {"us_per_frame", us},
+          {"joints", 42}, {"vertices", 1000},
+          {"label", "impl=" + impl + " scalar=float technique=" + technique + " scene=" + scene}};
+}
+
+json bench_document() {
+  json b = {{"context", {{"num_cpus", 2}, {"load_avg", json::array({0.1, 0.1, 0.1})}, {"rotorcert_quick", "false"}}},
+            {"benchmarks", json::array()}};
+  auto& runs = b["benchmarks"];
+  runs.push_back({{"name", "roofline/peak_fma/float"}, {"run_type", "iteration"}, {"flops_per_second", 100e9}});
+  runs.push_back({{"name", "roofline/peak_fma/double"}, {"run_type", "iteration"}, {"flops_per_second", 50e9}});
+  runs.push_back({{"name", "roofline/bandwidth/read"}, {"run_type", "iteration"}, {"bytes_per_second", 12e9}});
+  runs.push_back({{"name", "roofline/bandwidth/triad"}, {"run_type", "iteration"}, {"bytes_per_second", 10e9}});
+  runs.push_back(baseline_run("glm_slerp", "float", 4096, 50.0));
+  runs.push_back(baseline_run("glm_mix", "float", 4096, 45.0));
+  runs.push_back(op_run("rotor_simd", "float", "slerp", 4096, 4.0, 100.0, 52.0));     // 12.5x: met
+  runs.push_back(op_run("rotor_simd", "float", "blend_qlb", 4096, 5.0, 60.0, 96.0));  // 9x: missed by 15/9
+  runs.push_back(op_run("rotor_simd", "float", "slerp", 65536, 8.0, 100.0, 52.0));    // memory bound
+  runs.push_back(frame_run("medium", "glm_quat", "LBS", 300.0));
+  runs.push_back(frame_run("medium", "dq", "DQS", 400.0));
+  runs.push_back(frame_run("medium", "rotor_m2", "LBS", 350.0));
+  runs.push_back(frame_run("medium", "rotor_simd", "LBS", 250.0));
+  runs.push_back(frame_run("simple", "glm_quat", "LBS", 10.0));
+  runs.push_back(frame_run("simple", "dq", "DQS", 9.0));
+  runs.push_back(frame_run("simple", "rotor_m1", "LBS", 9.5));
+  // An error and an aggregate are not measurements.
+  runs.push_back({{"name", "op/nlerp/rotor_simd/float/4096"}, {"run_type", "iteration"}, {"error_occurred", true}});
+  runs.push_back({{"name", "op/compose/glm_quat/float/4096_mean"}, {"run_type", "aggregate"}, {"ns_per_element", 1.0}});
+  return b;
+}
+
+const json* find_op(const json& s, const std::string& op, long long n) {
+  for (const json& r : s.at("ops"))
+    if (r.at("op") == op && r.at("n") == n) return &r;
+  return nullptr;
+}
+
+TEST(SpeedSection, TargetsAreRatiosWithinTheRun) {
+  RC_CLAUSE("REPORT-2");
+  const json s = speed_section(bench_document(), {}, "bench.json");
+  ASSERT_EQ(s.at("targets").size(), 3u);
+  const json& slerp = s["targets"][0];
+  EXPECT_EQ(slerp.at("id"), "SIMD-SLERP");
+  EXPECT_DOUBLE_EQ(slerp.at("ratio").get<double>(), 50.0 / 4.0);
+  EXPECT_TRUE(slerp.at("met").get<bool>());
+  EXPECT_TRUE(slerp.at("missed_by").is_null());
+  const json& qlb = s["targets"][1];
+  EXPECT_DOUBLE_EQ(qlb.at("ratio").get<double>(), 45.0 / 5.0);
+  EXPECT_FALSE(qlb.at("met").get<bool>());
+  EXPECT_DOUBLE_EQ(qlb.at("missed_by").get<double>(), 15.0 / (45.0 / 5.0));
+  // nlerp errored: not measured, said so, never "met".
+  const json& nlerp = s["targets"][2];
+  EXPECT_TRUE(nlerp.at("ratio").is_null());
+  EXPECT_TRUE(nlerp.at("met").is_null());
+  EXPECT_FALSE(s.at("notes").empty());
+}
+
+TEST(SpeedSection, RooflineBoundIsComputeInCacheAndTheLowerRoofWhenStreaming) {
+  RC_CLAUSE("REPORT-2");
+  const json s = speed_section(bench_document(), {}, "bench.json");
+  const json* cached = find_op(s, "slerp", 4096);
+  ASSERT_NE(cached, nullptr);
+  EXPECT_EQ(cached->at("bound"), "compute");
+  EXPECT_DOUBLE_EQ(cached->at("attainable_per_second").get<double>(), 100e9 / 100.0);
+  EXPECT_DOUBLE_EQ(cached->at("roofline_fraction").get<double>(), (1e9 / 4.0) / (100e9 / 100.0));
+  EXPECT_DOUBLE_EQ(cached->at("vs_glm_slerp").get<double>(), 50.0 / 4.0);
+  // 65536: compute 1e9/s, memory (triad) 10e9 / 52 = 1.92e8/s: memory bound.
+  const json* streaming = find_op(s, "slerp", 65536);
+  ASSERT_NE(streaming, nullptr);
+  EXPECT_EQ(streaming->at("bound"), "memory");
+  EXPECT_DOUBLE_EQ(streaming->at("attainable_per_second").get<double>(), 10e9 / 52.0);
+  EXPECT_TRUE(streaming->at("vs_glm_slerp").is_null());  // no baseline at 65536 in this run
+  EXPECT_EQ(find_op(s, "compose", 4096), nullptr);        // the aggregate row is not an op
+}
+
+TEST(SpeedSection, PaperClaimComparesTheFastestRotorWithQlbAndDqb) {
+  RC_CLAUSE("REPORT-2");
+  const json s = speed_section(bench_document(), {}, "bench.json");
+  ASSERT_EQ(s.at("paper_claim").size(), 2u);
+  for (const json& c : s["paper_claim"]) {
+    if (c.at("scene") == "medium") {
+      EXPECT_EQ(c.at("rotor"), "rotor_simd LBS");  // the faster of rotor_m2 (350) and rotor_simd (250)
+      EXPECT_DOUBLE_EQ(c.at("vs_qlb").get<double>(), 300.0 / 250.0);
+      EXPECT_DOUBLE_EQ(c.at("vs_dqb").get<double>(), 400.0 / 250.0);
+      EXPECT_TRUE(c.at("holds").get<bool>());
+    } else {
+      EXPECT_EQ(c.at("scene"), "simple");
+      EXPECT_FALSE(c.at("holds").get<bool>());  // 9.5 us: faster than QLB (10), slower than DQB (9)
+    }
+  }
+  bool named = false;
+  for (const json& f : s.at("frames")) named = named || (f.at("impl") == "dq" && f.at("method") == "DQB");
+  EXPECT_TRUE(named);
+}
+
+TEST(SpeedSection, AccuracyJoinsTheCertificateOfTheSameTableAndOp) {
+  RC_CLAUSE("REPORT-2");
+  const json cert = {{"name", "rotor_simd"},
+                     {"scalar", "float"},
+                     {"accuracy", json::array({{{"op", "slerp"}, {"max_eps", 3.5}, {"p99_eps", 1.0}},
+                                               {{"op", "exp"}, {"max_eps", 1.0}, {"p99_eps", 0.5}}})}};
+  const json s = speed_section(bench_document(), {cert}, "bench.json");
+  ASSERT_EQ(s.at("accuracy_vs_speed").size(), 1u);  // exp was not benchmarked
+  const json& p = s["accuracy_vs_speed"][0];
+  EXPECT_EQ(p.at("op"), "slerp");
+  EXPECT_DOUBLE_EQ(p.at("ns_per_element").get<double>(), 4.0);
+  EXPECT_DOUBLE_EQ(p.at("max_eps").get<double>(), 3.5);
+}
+
+TEST(SpeedSection, NotABenchmarkDocumentIsAnError) {
+  RC_CLAUSE("REPORT-2");
+  EXPECT_THROW(speed_section(json::object(), {}, "x.json"), std::runtime_error);
+  EXPECT_THROW(speed_section(json{{"benchmarks", 3}}, {}, "x.json"), std::runtime_error);
+}
+
+// The renderers show the section and never throw on one with fields missing.
+TEST(SpeedSection, RenderedInHtmlAndMarkdown) {
+  RC_CLAUSE("REPORT-2");
+  json report = {{"sections", {{"speed", speed_section(bench_document(), {}, "bench.json")}}}};
+  const std::string html = rotorcert::report::render_html(report);
+  EXPECT_NE(html.find("id=\"section-speed\""), std::string::npos);
+  EXPECT_NE(html.find("missed by"), std::string::npos);
+  EXPECT_NE(html.find("does not hold"), std::string::npos);
+  const std::string md = rotorcert::report::render_markdown(report);
+  EXPECT_NE(md.find("| SIMD rotor slerp"), std::string::npos);
+  report["sections"]["speed"] = {{"targets", json::array({json::object()})}, {"ops", json::array({{{"op", 3}}})}};
+  EXPECT_NO_THROW(rotorcert::report::render_html(report));
+  EXPECT_NO_THROW(rotorcert::report::render_markdown(report));
+}
+
+}  // namespace
