@@ -210,7 +210,10 @@ void render_speed_html(std::ostream& out, const json& s) {
   out << "<h3>Operations: ns per element at 4096 (in cache)</h3>\n<div class=\"charts\">\n";
   for (const auto& [op, tables] : idx) {
     std::vector<Bar> bars;
-    for (const auto& [table, sizes] : tables) {
+    for (const auto& table_sizes : tables) {
+      // Named, not a structured binding: clang 14 cannot capture those in the lambda below.
+      const std::string& table = table_sizes.first;
+      const auto& sizes = table_sizes.second;
       const auto it = sizes.find(4096);
       if (it == sizes.end()) continue;
       bars.push_back({table, table + " " + op + ": " + num_text(*it->second, "ns_per_element") + " ns/element, roofline " +
@@ -226,7 +229,10 @@ void render_speed_html(std::ostream& out, const json& s) {
   for (const char* n : kSizes) out << "<th>ns/el n=" << n << "</th>";
   out << "<th>vs glm::slerp (4096)</th><th>roofline 4096 (compute)</th><th>roofline 65536</th></tr></thead>\n<tbody>\n";
   for (const auto& [op, tables] : idx)
-    for (const auto& [table, sizes] : tables) {
+    for (const auto& table_sizes : tables) {
+      // Named, not a structured binding: clang 14 cannot capture those in the lambda below.
+      const std::string& table = table_sizes.first;
+      const auto& sizes = table_sizes.second;
       const json* any = sizes.begin()->second;
       out << "<tr><td>" << esc(op) << "</td><td>" << esc(table) << "</td><td>" << esc(str(*any, "simd_target")) << "</td>";
       for (const char* n : kSizes) {
@@ -290,7 +296,10 @@ void render_speed_markdown(std::ostream& out, const json& s) {
   }
   header(out, {"Op", "Table", "ns/el n=1", "n=64", "n=4096", "n=65536", "vs glm::slerp (4096)", "roofline 4096", "roofline 65536"});
   for (const auto& [op, tables] : index_ops(s))
-    for (const auto& [table, sizes] : tables) {
+    for (const auto& table_sizes : tables) {
+      // Named, not a structured binding: clang 14 cannot capture those in the lambda below.
+      const std::string& table = table_sizes.first;
+      const auto& sizes = table_sizes.second;
       std::vector<std::string> cells = {cell(op), cell(table)};
       for (const char* n : kSizes) {
         const auto it = sizes.find(std::stoll(n));
