@@ -908,23 +908,34 @@ HWY_NOINLINE void slerp_block(const float* const* p, float* o, std::uint8_t* s) 
   store_status(bad, s);
 }
 
-int Slerp(std::size_t n, const float* a, const float* b, const float* t, float* out, std::uint8_t* status) {
+/// The batch of an interpolation kernel pair (slerp, nlerp): full blocks through the fast
+/// kernel two at a time (fast_blocks), the tail through for_blocks, and any block the fast
+/// kernel declines through the general one. The kernels are template arguments, so every call
+/// is direct and inlined as fast_blocks needs.
+template <FastBlock (*kFast)(const float*, const float*, const float*),
+          void (*kGeneral)(const float* const*, float*, std::uint8_t*)>
+HWY_INLINE int interpolate(std::size_t n, const float* a, const float* b, const float* t, float* out,
+                           std::uint8_t* status) {
   const std::size_t done = fast_blocks<2>(
-      n, out, status, [&](std::size_t i) ROTORCERT_SIMD_INLINE { return slerp_fast(a + 4 * i, b + 4 * i, t + i); },
+      n, out, status, [&](std::size_t i) ROTORCERT_SIMD_INLINE { return kFast(a + 4 * i, b + 4 * i, t + i); },
       [&](std::size_t i) {
         const float* const p[3] = {a + 4 * i, b + 4 * i, t + i};
-        slerp_block(p, out + 4 * i, status + i);
+        kGeneral(p, out + 4 * i, status + i);
       });
   for_blocks<3>(n - done, {a + 4 * done, b + 4 * done, t + done}, {4, 4, 1}, {kIdentity, kIdentity, kZero1},
                 out + 4 * done, 4, status + done, [](const float* const* p, float* o, std::uint8_t* s) {
-                  const FastBlock r = slerp_fast(p[0], p[1], p[2]);
+                  const FastBlock r = kFast(p[0], p[1], p[2]);
                   if (hn::AllTrue(D(), r.ordinary)) {
                     store_fast(r, o, s);
                   } else {
-                    slerp_block(p, o, s);
+                    kGeneral(p, o, s);
                   }
                 });
   return 0;
+}
+
+int Slerp(std::size_t n, const float* a, const float* b, const float* t, float* out, std::uint8_t* status) {
+  return interpolate<slerp_fast, slerp_block>(n, a, b, t, out, status);
 }
 
 /// NLERP-1: normalize(a + t (b' - a)), divided by max(1, |t|) first so that no finite t
@@ -949,22 +960,7 @@ HWY_NOINLINE void nlerp_block(const float* const* p, float* o, std::uint8_t* s) 
 }
 
 int Nlerp(std::size_t n, const float* a, const float* b, const float* t, float* out, std::uint8_t* status) {
-  const std::size_t done = fast_blocks<2>(
-      n, out, status, [&](std::size_t i) ROTORCERT_SIMD_INLINE { return nlerp_fast(a + 4 * i, b + 4 * i, t + i); },
-      [&](std::size_t i) {
-        const float* const p[3] = {a + 4 * i, b + 4 * i, t + i};
-        nlerp_block(p, out + 4 * i, status + i);
-      });
-  for_blocks<3>(n - done, {a + 4 * done, b + 4 * done, t + done}, {4, 4, 1}, {kIdentity, kIdentity, kZero1},
-                out + 4 * done, 4, status + done, [](const float* const* p, float* o, std::uint8_t* s) {
-                  const FastBlock r = nlerp_fast(p[0], p[1], p[2]);
-                  if (hn::AllTrue(D(), r.ordinary)) {
-                    store_fast(r, o, s);
-                  } else {
-                    nlerp_block(p, o, s);
-                  }
-                });
-  return 0;
+  return interpolate<nlerp_fast, nlerp_block>(n, a, b, t, out, status);
 }
 
 /// Weights of a block of blends (EDGE-9): all finite and >= 0 (-0 counts as 0), some > 0.
