@@ -1,11 +1,13 @@
 // `rotorcert report --out DIR`: the main job. Certifies every built-in implementation (each
 // clause in an isolated child process), runs every mutant of conformance/mutants/ against the
 // clauses it must break, runs the render check (VIS-1..3, render_check/) on the built-in
-// characters, runs the quick benchmarks (the speed section, shown and not scored) and writes
+// characters, certifies the third-party libraries of conformance/adapters (REPORT-3, into
+// OUT/third_party), runs the quick benchmarks (the speed section, shown and not scored) and writes
 // report.json, report.md and report.html.
 // Exit 0 when every table behaves as expected (its known defects, impls/*/expected_failures.json,
-// FAIL and everything else it claims passes), every mutant is killed and every render-check
-// method gives what is expected of it; 1 otherwise; 2 on usage.
+// FAIL and everything else it claims passes), every mutant is killed, every render-check
+// method gives what is expected of it and every third-party library that ran gives exactly its
+// known defects; 1 otherwise; 2 on usage.
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +43,8 @@ struct Args {
   std::string bench_dir;  // --bench: a directory with the bench.json of an earlier `rotorcert bench`
   bool bench_full = false;
   bool no_bench = false;
+  ThirdPartyRequest third_party;
+  bool no_third_party = false;
 };
 
 struct MutantRun {
@@ -187,6 +191,25 @@ int run(const Args& a) {
     report["sections"]["render"] = {{"note", render_note}};
   }
 
+  // Third-party libraries (issue 8): GLM and Eigen reuse the certificates just made.
+  if (a.no_third_party) {
+    report["sections"]["third_party"] = {{"note", "left out (--no-third-party)"}};
+  } else {
+    thirdparty::KnownCertificates known;
+    for (const certify::json& c : cj) known[c.at("name").get<std::string>() + "/" + c.at("scalar").get<std::string>()] = c;
+    ThirdPartyRequest request = a.third_party;
+    request.out = (std::filesystem::path(a.common.out) / "third_party").string();
+    request.quiet = a.common.quiet;
+    thirdparty::Outcome outcome;
+    const int rc = run_third_party(request, spec, options, known, "rotorcert report: third-party", outcome);
+    if (rc == kExitUsage) return kExitUsage;
+    if (rc != kExitOk) {
+      report["summary"]["as_expected"] = false;
+      report["summary"]["exit_code"] = 1;
+    }
+    report["sections"]["third_party"] = std::move(outcome.section);
+  }
+
   // Speed (issue 7): the quick benchmark run into OUT/bench, after certifying so that no child
   // process of the certification competes with it for the CPUs. Shown, not scored.
   if (a.no_bench) {
@@ -234,6 +257,8 @@ int run(const Args& a) {
                 << (rs.at("as_expected").get<bool>() ? "every method as expected" : "some methods NOT as expected") << '\n';
     else
       std::cout << "render check: " << rs.at("note").get<std::string>() << '\n';
+    if (report["sections"]["third_party"].contains("libraries"))
+      print_third_party_summary(std::cout, report["sections"]["third_party"]);
     const certify::json& sp = report["sections"]["speed"];
     if (sp.contains("targets"))
       print_speed_summary(std::cout, sp);
@@ -272,6 +297,8 @@ Command add_report(CLI::App& parent) {
   app->add_option("--bench", args->bench_dir, "Use the bench.json that `rotorcert bench --out DIR` wrote instead of running it");
   app->add_flag("--bench-full", args->bench_full, "Run every benchmark size (not only the quick set)");
   app->add_flag("--no-bench", args->no_bench, "Leave the speed section out");
+  app->add_flag("--no-third-party", args->no_third_party, "Leave the third-party libraries out");
+  add_third_party_options(*app, args->third_party);
   add_certify_options(*app, args->common);
   return {app, [args] { return run(*args); }};
 }

@@ -13,6 +13,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <rotorcert/thirdparty/thirdparty.hpp>
+
 namespace rotorcert::cli {
 
 inline constexpr int kExitOk = 0;
@@ -75,5 +77,29 @@ struct BenchRequest {
 int run_bench(const BenchRequest& request, const char* who, nlohmann::json& bench);
 /// The targets and the paper's claim from a speed section, a line each.
 void print_speed_summary(std::ostream& out, const nlohmann::json& speed);
+
+/// `rotorcert thirdparty --out DIR [--adapter NAME]...` (cmd_thirdparty.cpp).
+Command add_thirdparty(CLI::App& parent);
+
+/// What `rotorcert thirdparty` is asked to certify; `rotorcert report` asks the same for its
+/// third-party section (into OUT/third_party).
+struct ThirdPartyRequest {
+  ThirdPartyRequest();                  // the build's defaults
+  std::string adapters_dir;             // conformance/adapters
+  std::string env_dir;                  // scripts/setup-adapters' environments
+  std::string plugin_dir;               // the build's adapter_plugins/
+  std::string out;                      // vectors, results files and adapter logs go here
+  std::vector<std::string> names;       // empty: every adapter
+  double adapter_timeout_s = 900;
+  bool quiet = false;
+};
+/// --adapters, --adapters-env, --plugins, --adapter-timeout.
+void add_third_party_options(CLI::App& app, ThirdPartyRequest& request);
+/// Certifies the libraries; exit code as `rotorcert thirdparty` (0 every library that ran as
+/// expected, 1 not, 2 usage), messages prefixed with `who`.
+int run_third_party(const ThirdPartyRequest& request, const spec::Spec& spec, const certify::CertifyOptions& options,
+                    const thirdparty::KnownCertificates& known, const char* who, thirdparty::Outcome& outcome);
+/// One line per library: status, defects, claims, or why it did not run.
+void print_third_party_summary(std::ostream& out, const nlohmann::json& section);
 
 }  // namespace rotorcert::cli

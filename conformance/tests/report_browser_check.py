@@ -89,7 +89,8 @@ class Dom(html.parser.HTMLParser):
         if tag == "section":
             self.stack.append(a.get("id", ""))
             self.sections.setdefault(a.get("id", ""), {"svg": 0, "rows": 0, "tables": [], "mutant_rows": 0,
-                                                        "not_killed_rows": 0, "render_rows": 0, "img": 0})
+                                                        "not_killed_rows": 0, "render_rows": 0, "img": 0,
+                                                        "library_rows": 0, "defect_rows": 0})
         if tag == "table":
             cls = a.get("class", "")
             self.tables.append(cls)
@@ -111,6 +112,13 @@ class Dom(html.parser.HTMLParser):
                 any(c in a.get("class", "").split() for c in ("as-expected", "not-as-expected")):
             for s in self.stack:
                 self.sections[s]["render_rows"] += 1
+        if tag == "tr" and "data-library" in a and self.table_stack:
+            kind = self.table_stack[-1].split()
+            for s in self.stack:
+                if "third-party" in kind:
+                    self.sections[s]["library_rows"] += 1
+                if "third-party-defects" in kind:
+                    self.sections[s]["defect_rows"] += 1
         if tag == "img":
             for s in self.stack:
                 self.sections[s]["img"] += 1
@@ -259,6 +267,23 @@ def check_page(report, dom_text, log, fail):
             figures = render.get("figures", [])
             fail.check(section["img"] == len(figures),
                        f"the render section shows {section['img']} images, report.json has {len(figures)} figures")
+    check_third_party(report, dom, fail)
+
+
+def check_third_party(report, dom, fail):
+    """The third-party section shows a row per library and a row per defect of report.json."""
+    tp = report.get("sections", {}).get("third_party")
+    if not (isinstance(tp, dict) and isinstance(tp.get("libraries"), list)):
+        return
+    section = dom.sections.get("section-third_party")
+    if section is None:
+        return
+    libs = tp["libraries"]
+    defects = sum(len(l.get("defects", [])) for l in libs)
+    fail.check(section["library_rows"] == len(libs),
+               f"the third-party table has {section['library_rows']} rows, report.json {len(libs)} libraries")
+    fail.check(section["defect_rows"] == defects,
+               f"the third-party section shows {section['defect_rows']} defects, report.json has {defects}")
 
 
 def main():

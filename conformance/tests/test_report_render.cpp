@@ -211,7 +211,7 @@ json sample_report() {
              {{"PASS", 3}, {"QUALITY_WARNING", 1}, {"FAIL", 3}, {"NOT_SUPPORTED", 1}, {"CRASH", 1}, {"TIMEOUT", 1}}},
             {"as_expected", false},
             {"exit_code", 1}}},
-          {"sections", {{"third_party", {{"ns_per_op", 12}, {"remark", "<not yet rendered>"}}}, {"mutants", mutants_section()}}}};
+          {"sections", {{"future_part", {{"ns_per_op", 12}, {"remark", "<not yet rendered>"}}}, {"mutants", mutants_section()}}}};
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -410,10 +410,10 @@ TEST_F(ReportRender, ConventionsExpectedFailuresAndPluginsAreExplained) {
 }
 
 TEST_F(ReportRender, UnknownSectionsAreShownAsJson) {
-  const std::size_t at = html.find("<section class=\"extra\" id=\"section-third_party\">\n<h2>third_party</h2>\n<pre");
+  const std::size_t at = html.find("<section class=\"extra\" id=\"section-future_part\">\n<h2>future_part</h2>\n<pre");
   ASSERT_NE(at, std::string::npos);
   EXPECT_NE(html.find("&quot;ns_per_op&quot;: 12", at), std::string::npos);
-  EXPECT_NE(md.find("## third_party\n\n```json\n"), std::string::npos);
+  EXPECT_NE(md.find("## future_part\n\n```json\n"), std::string::npos);
   EXPECT_NE(md.find("\"ns_per_op\": 12"), std::string::npos);
 }
 
@@ -592,7 +592,7 @@ TEST(ReportRenderRobustness, IncompleteReportsRenderWithoutThrowing) {
   json r = sample_report();
   r["implementations"][0]["accuracy"][0]["max_eps"] = nullptr;
   r["implementations"][0]["clauses"][0]["worst"]["detail"] = std::string("bad utf-8 \xff\xfe");
-  r["sections"]["third_party"] = std::string("bad utf-8 \xff");
+  r["sections"]["future_part"] = std::string("bad utf-8 \xff");
   EXPECT_NO_THROW(render_html(r));
   EXPECT_NO_THROW(render_markdown(r));
 }

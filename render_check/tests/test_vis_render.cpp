@@ -301,7 +301,7 @@ TEST(VisCli, BuiltinCharactersWriteTheFiles) {
   const Scratch rep_scratch("report");
   const fs::path& rep = rep_scratch.path;
   const auto report = rotorcert::testing::run_rotorcert("report --out '" + rep.string() +
-                                                        "' --impl rotor_m2 --cases 4 --no-mutants -q --render '" +
+                                                        "' --impl rotor_m2 --cases 4 --no-mutants --no-third-party -q --render '" +
                                                         out.string() + "'");
   EXPECT_EQ(report.exit_code, 0) << report.output;
   std::ifstream rin(rep / "report.json");

@@ -14,6 +14,7 @@
 #include "common.hpp"
 #include "markup.hpp"
 #include "render_speed.hpp"
+#include "render_third_party.hpp"
 
 namespace rotorcert::report {
 
@@ -176,7 +177,7 @@ void render_nav(std::ostream& out, const json& r) {
   for (const json& cert : arr(r, "implementations"))
     out << "<li><a href=\"#" << esc(anchor(cert)) << "\">" << esc(table_label(cert)) << "</a></li>\n";
   for (const auto& [name, value] : obj_at(r, "sections").items())
-    out << "<li><a href=\"#section-" << esc(name) << "\">" << (name == "mutants" ? "Mutants" : name == "render" ? "Render check" : name == "speed" ? "Speed" : esc(name))
+    out << "<li><a href=\"#section-" << esc(name) << "\">" << (name == "mutants" ? "Mutants" : name == "render" ? "Render check" : name == "speed" ? "Speed" : name == "third_party" ? "Third-party libraries" : esc(name))
         << "</a></li>\n";
   out << "</ul></nav>\n";
 }
@@ -619,7 +620,7 @@ void render_render(std::ostream& out, const json& section) {
   out << "</tbody>\n</table>\n</div>\n</section>\n";
 }
 
-/// Sections without a renderer yet (later issues: speed, third_party), shown as JSON.
+/// The sections; one this renderer does not know is shown as JSON.
 void render_sections(std::ostream& out, const json& r) {
   for (const auto& [name, value] : obj_at(r, "sections").items()) {
     if (name == "mutants" && value.is_object()) {
@@ -632,6 +633,10 @@ void render_sections(std::ostream& out, const json& r) {
     }
     if (name == "speed" && value.is_object()) {
       render_speed_html(out, value);
+      continue;
+    }
+    if (name == "third_party" && value.is_object()) {
+      render_third_party_html(out, value);
       continue;
     }
     out << "<section class=\"extra\" id=\"section-" << esc(name) << "\">\n<h2>" << esc(name)

@@ -9,6 +9,7 @@
 #include "common.hpp"
 #include "markup.hpp"
 #include "render_speed.hpp"
+#include "render_third_party.hpp"
 
 namespace rotorcert::report {
 
@@ -291,7 +292,7 @@ void render_render(std::ostream& out, const json& section) {
   out << "\n";
 }
 
-/// Sections this renderer does not know (later issues: speed, third_party): visible as
+/// Sections this renderer does not know (added by a later issue): visible as
 /// JSON until they get their own rendering.
 void render_sections(std::ostream& out, const json& r) {
   const json& sections = obj_at(r, "sections");
@@ -306,6 +307,10 @@ void render_sections(std::ostream& out, const json& r) {
     }
     if (name == "speed" && value.is_object()) {
       render_speed_markdown(out, value);
+      continue;
+    }
+    if (name == "third_party" && value.is_object()) {
+      render_third_party_markdown(out, value);
       continue;
     }
     out << "## " << cell(name) << "\n\n";

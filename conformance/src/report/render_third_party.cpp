@@ -1,0 +1,233 @@
+// sections.third_party rendered (render_third_party.hpp). Like every renderer here it never throws
+// on a section with missing fields: reads go through str / arr / obj_at or check the type.
+#include "render_third_party.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "common.hpp"
+#include "markup.hpp"
+
+namespace rotorcert::report::detail {
+
+namespace {
+
+constexpr const char* kTitle = "Third-party libraries (REPORT-3)";
+
+struct Column {
+  std::string library, scalar;
+  const json* certificate;
+};
+
+/// One column per certificate of every certified library, in section order.
+std::vector<Column> columns(const json& section) {
+  std::vector<Column> cols;
+  for (const json& lib : arr(section, "libraries"))
+    for (const json& c : arr(lib, "certificates")) cols.push_back({str(lib, "name"), str(c, "scalar"), &c});
+  return cols;
+}
+
+/// The clauses any certificate ran or claims, in the order they first appear (each certificate
+/// lists them in spec order), NOT_SUPPORTED everywhere left out.
+std::vector<std::string> matrix_rows(const std::vector<Column>& cols) {
+  std::vector<std::string> rows;
+  for (const Column& c : cols)
+    for (const json& r : arr(*c.certificate, "clauses")) {
+      if (str(r, "outcome") == "NOT_SUPPORTED") continue;
+      if (std::find(rows.begin(), rows.end(), str(r, "id")) == rows.end()) rows.push_back(str(r, "id"));
+    }
+  return rows;
+}
+
+std::string worst_text(const json& worst) {
+  if (!worst.is_object()) return "";
+  std::string s = str(worst, "op");
+  if (!str(worst, "label").empty()) s += (s.empty() ? "" : ", ") + str(worst, "label");
+  return s;
+}
+
+std::string package_text(const json& lib) {
+  const json& p = obj_at(lib, "package");
+  return str(p, "registry") + " " + str(p, "name") + " " + str(p, "version");
+}
+
+std::string claims_text(const json& lib) {
+  std::vector<std::string> claims;
+  for (const json& c : arr(lib, "certificates")) claims.push_back(str(c, "claim"));
+  return join(claims, "; ");
+}
+
+std::string expected_text(const json& lib) {
+  if (str(lib, "status") != "certified") return "\u2014";
+  return str(lib, "as_expected") == "true" ? "yes" : "NO";
+}
+
+std::string defects_count(const json& lib) {
+  std::size_t known = 0, fresh = 0;
+  for (const json& d : arr(lib, "defects")) (str(d, "known") == "true" ? known : fresh) += 1;
+  if (str(lib, "status") != "certified") return "\u2014";
+  return std::to_string(known + fresh) + (fresh ? " (" + std::to_string(fresh) + " not listed)" : "");
+}
+
+/// Listed defects a run with fewer cases than they were found with did not reach.
+std::string not_reproduced_text(const json& lib) {
+  std::vector<std::string> items;
+  for (const json& n : arr(lib, "not_reproduced")) items.push_back(str(n, "clause") + " (" + str(n, "scalar") + ")");
+  return items.empty() ? "" : "listed defects not reached with this run's cases: " + join(items, ", ");
+}
+
+}  // namespace
+
+void render_third_party_html(std::ostream& out, const json& section) {
+  out << "<section class=\"third-party\" id=\"section-third_party\">\n<h2>" << kTitle << "</h2>\n";
+  if (!section.contains("libraries")) {
+    out << "<p class=\"muted\">" << esc(str(section, "note")) << "</p>\n</section>\n";
+    return;
+  }
+  out << "<p class=\"muted\">Libraries nobody here wrote, certified through their adapters (<code>"
+      << esc(str(section, "adapters_dir")) << "</code>): C-ABI tables in process, other languages through the JSON "
+      << "test vectors (seed " << esc(str(section, "seed")) << ", " << esc(str(section, "cases_per_family"))
+      << " cases per family). Adapters map conventions and never patch behaviour: every defect below is the "
+         "library's. Each library's known defects are listed beside its adapter; <em>as expected</em> means exactly "
+         "those FAIL. How to certify your own: <code>conformance/CERTIFY.md</code>.</p>\n<p><strong>"
+      << esc(str(section, "certified")) << " certified</strong>, " << esc(str(section, "not_run")) << " not run, "
+      << esc(str(section, "errors")) << " failed to run.</p>\n";
+
+  out << "<div class=\"scroll\">\n<table class=\"third-party\">\n<thead><tr><th>Library</th><th>Version</th><th>Package</th>"
+         "<th>Route</th><th>Status</th><th>Claim</th><th>Defects</th><th>As expected</th><th>Reproduce</th></tr></thead>\n<tbody>\n";
+  for (const json& lib : arr(section, "libraries")) {
+    const std::string status = str(lib, "status");
+    out << "<tr data-library=\"" << esc(str(lib, "name")) << "\" data-status=\"" << esc(status) << "\"><td>";
+    // The homepage as text, not a link: the report loads and links nothing outside itself.
+    out << "<strong>" << esc(str(lib, "library")) << "</strong>";
+    if (!str(lib, "homepage").empty()) out << " <span class=\"muted\">" << esc(str(lib, "homepage")) << "</span>";
+    out << "<div class=\"muted\">" << esc(str(lib, "description")) << "</div></td><td>"
+        << esc(lib.contains("version") && lib["version"].is_array() ? join(lib["version"], ", ") : str(lib, "version"))
+        << "</td><td>" << esc(package_text(lib)) << "</td><td>" << esc(str(lib, "route")) << " (" << esc(str(lib, "language"))
+        << ")</td><td>" << esc(status);
+    if (!str(lib, "reason").empty()) out << "<div class=\"error\">" << esc(str(lib, "reason")) << "</div>";
+    if (!not_reproduced_text(lib).empty()) out << "<div class=\"muted\">" << esc(not_reproduced_text(lib)) << "</div>";
+    out << "</td><td>" << esc(claims_text(lib)) << "</td><td>" << esc(defects_count(lib)) << "</td><td class=\""
+        << (expected_text(lib) == "NO" ? "no" : "yes") << "\">" << expected_text(lib) << "</td><td><code>"
+        << esc(str(lib, "reproduce")) << "</code></td></tr>\n";
+  }
+  out << "</tbody>\n</table>\n</div>\n";
+
+  const std::vector<Column> cols = columns(section);
+  if (!cols.empty()) {
+    out << "<h3>Per clause, per library</h3>\n<p class=\"muted\">Clauses some library supports; the tooltip gives the "
+           "worst input. Blank: not supported.</p>\n<div class=\"scroll\">\n<table class=\"third-party-matrix\">\n<thead><tr><th>Clause</th>";
+    for (const Column& c : cols) out << "<th>" << esc(c.library) << "<br><span class=\"muted\">" << esc(c.scalar) << "</span></th>";
+    out << "</tr></thead>\n<tbody>\n";
+    for (const std::string& id : matrix_rows(cols)) {
+      out << "<tr><td><code>" << esc(id) << "</code></td>";
+      for (const Column& c : cols) {
+        const json* r = find_clause(*c.certificate, id);
+        const std::string oc = r ? str(*r, "outcome") : "";
+        if (oc.empty() || oc == "NOT_SUPPORTED") {
+          out << "<td></td>";
+          continue;
+        }
+        const json& worst = r->contains("worst") ? (*r)["worst"] : json();
+        out << "<td><span class=\"badge oc-" << esc(oc) << "\" title=\"" << esc(worst_text(worst) + " " + str(worst, "input"))
+            << "\">" << esc(outcome_abbrev(oc)) << "</span>" << (str(*r, "expected_failure").empty() ? "" : " <span class=\"muted\">known</span>")
+            << "</td>";
+      }
+      out << "</tr>\n";
+    }
+    out << "</tbody>\n</table>\n</div>\n";
+  }
+
+  out << "<h3>Defects</h3>\n";
+  bool any = false;
+  for (const json& lib : arr(section, "libraries")) any = any || !arr(lib, "defects").empty();
+  if (!any) {
+    out << "<p class=\"muted\">None found.</p>\n";
+  } else {
+    out << "<div class=\"scroll\">\n<table class=\"third-party-defects\">\n<thead><tr><th>Library</th><th>Clause</th><th>Outcome</th>"
+           "<th>Worst input (hexfloat)</th><th>Error</th><th>What</th><th>Known defect</th><th>Reproduce</th></tr></thead>\n<tbody>\n";
+    for (const json& lib : arr(section, "libraries"))
+      for (const json& d : arr(lib, "defects")) {
+        const json& worst = d.contains("worst") ? d["worst"] : json();
+        out << "<tr data-library=\"" << esc(str(lib, "name")) << "\" data-clause=\"" << esc(str(d, "clause")) << "\"><td>"
+            << esc(str(lib, "name")) << " <span class=\"muted\">" << esc(str(d, "scalar")) << "</span></td><td><code>"
+            << esc(str(d, "clause")) << "</code></td><td><span class=\"badge oc-" << esc(str(d, "outcome")) << "\">"
+            << esc(str(d, "outcome")) << "</span></td><td><code>" << esc(str(worst, "input")) << "</code></td><td>"
+            << esc(error_eps_text(worst.is_object() && worst.contains("error_eps") ? worst["error_eps"] : json())) << " " << kEps
+            << "</td><td>" << esc(worst_text(worst)) << (str(worst, "detail").empty() ? "" : ": " + esc(str(worst, "detail")))
+            << "</td><td>" << (str(d, "known") == "true" ? esc(str(d, "why")) : "<strong class=\"no\">not listed</strong>")
+            << "</td><td><code>" << esc(str(d, "reproduce")) << "</code></td></tr>\n";
+      }
+    out << "</tbody>\n</table>\n</div>\n";
+  }
+
+  out << "<h3>Conventions each adapter maps</h3>\n";
+  for (const json& lib : arr(section, "libraries")) {
+    out << "<details><summary>" << esc(str(lib, "library")) << " <span class=\"muted\">(<code>" << esc(str(lib, "adapter"))
+        << "</code>)</span></summary>\n<ul>\n";
+    for (const json& c : arr(lib, "conventions")) out << "<li>" << esc(c.is_string() ? c.get<std::string>() : dump(c)) << "</li>\n";
+    out << "</ul>\n<table>\n<thead><tr><th>ABI op</th><th>Library call</th></tr></thead>\n<tbody>\n";
+    for (const auto& [op, call] : obj_at(lib, "ops").items())
+      out << "<tr><td><code>" << esc(op) << "</code></td><td>" << esc(call.is_string() ? call.get<std::string>() : dump(call)) << "</td></tr>\n";
+    for (const auto& [op, why] : obj_at(lib, "unsupported").items())
+      out << "<tr><td><code>" << esc(op) << "</code></td><td class=\"muted\">not supported: "
+          << esc(why.is_string() ? why.get<std::string>() : dump(why)) << "</td></tr>\n";
+    out << "</tbody>\n</table>\n</details>\n";
+  }
+  out << "</section>\n";
+}
+
+void render_third_party_markdown(std::ostream& out, const json& section) {
+  out << "## " << kTitle << "\n\n";
+  if (!section.contains("libraries")) {
+    out << cell(str(section, "note")) << "\n\n";
+    return;
+  }
+  out << "Adapters in `" << str(section, "adapters_dir") << "`; vectors of seed " << str(section, "seed") << ", "
+      << str(section, "cases_per_family") << " cases per family. " << str(section, "certified") << " certified, "
+      << str(section, "not_run") << " not run, " << str(section, "errors")
+      << " failed to run. Guide: `conformance/CERTIFY.md`.\n\n";
+  header(out, {"library", "version", "package", "route", "status", "claim", "defects", "as expected", "reproduce"});
+  for (const json& lib : arr(section, "libraries")) {
+    std::string status = str(lib, "status") + (str(lib, "reason").empty() ? "" : ": " + str(lib, "reason"));
+    if (!not_reproduced_text(lib).empty()) status += "; " + not_reproduced_text(lib);
+    row(out, {cell(str(lib, "library")),
+              cell(lib.contains("version") && lib["version"].is_array() ? join(lib["version"], ", ") : str(lib, "version")),
+              cell(package_text(lib)), cell(str(lib, "route")), cell(status), cell(claims_text(lib)), cell(defects_count(lib)),
+              expected_text(lib), code(str(lib, "reproduce"))});
+  }
+  out << '\n';
+  const std::vector<Column> cols = columns(section);
+  if (!cols.empty()) {
+    out << "### Per clause, per library\n\n";
+    std::vector<std::string> head = {"clause"};
+    for (const Column& c : cols) head.push_back(cell(c.library + " " + c.scalar));
+    header(out, head);
+    for (const std::string& id : matrix_rows(cols)) {
+      std::vector<std::string> cells = {code(id)};
+      for (const Column& c : cols) {
+        const json* r = find_clause(*c.certificate, id);
+        const std::string oc = r ? str(*r, "outcome") : "";
+        cells.push_back(oc.empty() || oc == "NOT_SUPPORTED" ? "" : outcome_abbrev(oc));
+      }
+      row(out, cells);
+    }
+    out << '\n';
+  }
+  out << "### Defects\n\n";
+  bool any = false;
+  for (const json& lib : arr(section, "libraries"))
+    for (const json& d : arr(lib, "defects")) {
+      if (!any) header(out, {"library", "clause", "outcome", "worst input", "error (eps)", "what", "known defect", "reproduce"});
+      any = true;
+      const json& worst = d.contains("worst") ? d["worst"] : json();
+      row(out, {cell(str(lib, "name") + " " + str(d, "scalar")), code(str(d, "clause")), str(d, "outcome"), code(str(worst, "input")),
+                error_eps_text(worst.is_object() && worst.contains("error_eps") ? worst["error_eps"] : json()),
+                cell(worst_text(worst) + (str(worst, "detail").empty() ? "" : ": " + str(worst, "detail"))),
+                cell(str(d, "known") == "true" ? str(d, "why") : "NOT LISTED"), code(str(d, "reproduce"))});
+    }
+  out << (any ? "\n" : "None found.\n\n");
+}
+
+}  // namespace rotorcert::report::detail

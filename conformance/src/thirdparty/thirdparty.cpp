@@ -1,0 +1,294 @@
+#include <rotorcert/thirdparty/thirdparty.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <stdexcept>
+
+#include <rotorcert/vectors/check.hpp>
+#include <rotorcert/vectors/error.hpp>
+#include <rotorcert/vectors/vector_file.hpp>
+#include <rotorcert/vectors/vector_set.hpp>
+
+namespace rotorcert::thirdparty {
+namespace fs = std::filesystem;
+using certify::json;
+
+namespace {
+
+/// The last lines of a log, for a reason that fits in a report cell.
+std::string log_tail(const fs::path& log, std::size_t lines = 6) {
+  std::ifstream in(log);
+  std::vector<std::string> all;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) all.push_back(line);
+  std::string tail;
+  for (std::size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i) tail += (tail.empty() ? "" : "\n") + all[i];
+  return tail;
+}
+
+/// What the section says about a library before it runs: its manifest, flattened.
+json library_entry(const Manifest& m, const std::string& reproduce) {
+  const json& r = m.raw;
+  return {{"name", m.name},
+          {"library", m.library},
+          {"homepage", r.value("homepage", "")},
+          {"license", r.value("license", "")},
+          {"package", r.value("package", json::object())},
+          {"route", m.route},
+          {"language", m.language},
+          {"scalars", m.scalars},
+          {"description", r.value("description", "")},
+          {"conventions", r.value("conventions", json::array())},
+          {"ops", r.value("ops", json::object())},
+          {"unsupported", r.value("unsupported", json::object())},
+          {"adapter", (fs::path("conformance/adapters") / m.name).generic_string()},
+          {"status", "not run"},
+          {"reason", ""},
+          {"reproduce", reproduce},
+          {"certificates", json::array()},
+          {"defects", json::array()},
+          {"as_expected", nullptr}};
+}
+
+bool bad(const std::string& outcome) { return outcome == "FAIL" || outcome == "CRASH" || outcome == "TIMEOUT"; }
+
+/// Every claimed clause that did not pass, with its worst input and error: the library's defects
+/// (known: listed in its expected_failures.json) and surprises (not listed).
+json defects_of(const json& cert) {
+  json list = json::array();
+  for (const json& c : cert.at("clauses")) {
+    if (!c.at("claimed").get<bool>() || !bad(c.at("outcome"))) continue;
+    list.push_back({{"scalar", cert.at("scalar")},
+                    {"clause", c.at("id")},
+                    {"outcome", c.at("outcome")},
+                    {"known", !c.at("expected_failure").is_null()},
+                    {"why", c.at("expected_failure")},
+                    {"cases", c.at("cases")},
+                    {"failures", c.at("failures")},
+                    {"worst", c.at("worst")},
+                    {"conventions", c.at("conventions")},
+                    {"note", c.at("note")},
+                    {"reproduce", c.at("reproduce")}});
+  }
+  return list;
+}
+
+/// Whether a library is as expected: no claimed clause fails unless listed (a new defect, or the
+/// adapter changed), and every listed defect FAILs (a pass is news too: the library was fixed).
+/// The listed defects were found with kListedAtCases cases per family; a run with fewer cases may
+/// not reach a listed defect's input, so there such a clause is "not reproduced", not a surprise.
+void finish(json& lib, int cases_per_family) {
+  bool expected = true;
+  json not_reproduced = json::array();
+  for (const json& c : lib.at("certificates")) {
+    expected = expected && c.at("error").is_null();
+    for (const json& r : c.at("clauses")) {
+      if (!r.at("claimed").get<bool>()) continue;
+      const std::string outcome = r.at("outcome");
+      const bool good = outcome == "PASS" || outcome == "QUALITY_WARNING";
+      if (r.at("expected_failure").is_null()) {
+        expected = expected && good;  // a claimed clause NOT_SUPPORTED too, as certify::as_expected
+      } else if (outcome != "FAIL") {
+        if (cases_per_family >= kListedAtCases) expected = false;
+        not_reproduced.push_back({{"scalar", c.at("scalar")}, {"clause", r.at("id")}, {"outcome", outcome}});
+      }
+    }
+    for (json& d : defects_of(c)) lib.at("defects").push_back(std::move(d));
+  }
+  lib["status"] = "certified";
+  lib["as_expected"] = expected;
+  lib["not_reproduced"] = not_reproduced;
+  json versions = json::array();
+  for (const json& c : lib.at("certificates"))
+    if (std::find(versions.begin(), versions.end(), c.at("version")) == versions.end()) versions.push_back(c.at("version"));
+  lib["version"] = versions.size() == 1 ? versions.front() : versions;
+}
+
+}  // namespace
+
+std::string reproduce_command(const std::string& adapter, const std::vector<std::string>& clauses) {
+  std::string s = "rotorcert thirdparty --adapter " + adapter;
+  for (const std::string& c : clauses) s += " --clause " + c;
+  return s + " --out third-party-" + adapter;
+}
+
+Outcome certify_third_party(const spec::Spec& spec, const Options& o, const KnownCertificates& known) {
+  std::vector<Manifest> manifests = load_manifests(o.adapters_dir);
+  for (const std::string& n : o.names)
+    if (std::none_of(manifests.begin(), manifests.end(), [&](const Manifest& m) { return m.name == n; })) {
+      std::string have;
+      for (const Manifest& m : manifests) have += (have.empty() ? "" : ", ") + m.name;
+      throw std::runtime_error("no adapter named '" + n + "' in " + o.adapters_dir.string() + " (have: " + have + ")");
+    }
+  std::erase_if(manifests, [&](const Manifest& m) {
+    return !o.names.empty() && std::find(o.names.begin(), o.names.end(), m.name) == o.names.end();
+  });
+  // Seed and cases other than the defaults travel with the reproduce commands.
+  std::string run_options;
+  if (o.certify.cases.seed != 1) run_options += " --seed " + std::to_string(o.certify.cases.seed);
+  if (o.certify.cases.cases_per_family != 64) run_options += " --cases " + std::to_string(o.certify.cases.cases_per_family);
+  auto reproduce = [&](const std::string& name, const std::vector<std::string>& clauses) {
+    std::string s = reproduce_command(name, clauses);
+    return s.insert(s.find(" --out"), run_options);
+  };
+
+  std::vector<json> libs;
+  for (const Manifest& m : manifests) libs.push_back(library_entry(m, reproduce(m.name, o.certify.clauses)));
+
+  // Route abi: one certification run over every table, children in parallel.
+  struct Slot {
+    std::size_t lib;
+    std::string scalar;
+  };
+  std::vector<certify::Target> targets;
+  std::vector<Slot> slots;
+  std::vector<std::vector<std::pair<std::string, json>>> reused(libs.size());
+  const std::vector<certify::Target> builtins = certify::builtin_targets();
+  for (std::size_t i = 0; i < manifests.size(); ++i) {
+    const Manifest& m = manifests[i];
+    if (m.route != "abi") continue;
+    for (const std::string& scalar : m.scalars) {
+      if (!m.builtin.empty()) {
+        if (const auto k = known.find(m.builtin + "/" + scalar); k != known.end()) {
+          reused[i].emplace_back(scalar, k->second);
+          continue;
+        }
+        const auto t = std::find_if(builtins.begin(), builtins.end(), [&](const certify::Target& b) {
+          return b.info.name == m.builtin && b.info.scalar == scalar;
+        });
+        if (t == builtins.end()) {
+          libs[i]["status"] = "error";
+          libs[i]["reason"] = "no built-in " + scalar + " table named " + m.builtin;
+          continue;
+        }
+        targets.push_back(*t);
+        slots.push_back({i, scalar});
+        continue;
+      }
+      const fs::path path = o.plugin_dir / (m.plugin + ".so");
+      if (!fs::exists(path)) {
+        libs[i]["reason"] = "the plugin " + path.string() + " was not built: its library was not found when the build was " +
+                            "configured (scripts/bootstrap installs it; then cmake --preset default again)";
+        break;
+      }
+      try {
+        bool found = false;
+        for (const certify::Target& t : certify::probe_plugin(path.string(), o.certify.limits))
+          if (t.info.scalar == scalar) {
+            targets.push_back(t);
+            slots.push_back({i, scalar});
+            found = true;
+          }
+        if (!found) throw std::runtime_error("it has no " + scalar + " table");
+      } catch (const std::exception& e) {
+        libs[i]["status"] = "error";
+        libs[i]["reason"] = "the plugin " + path.string() + " cannot be certified: " + e.what();
+      }
+    }
+  }
+  if (!targets.empty()) {
+    if (!o.quiet) std::cout << "third-party: certifying " << targets.size() << " C-ABI table(s) ...\n" << std::flush;
+    std::vector<certify::Certificate> certs = certify::certify_targets(spec, targets, o.certify);
+    for (std::size_t t = 0; t < certs.size(); ++t) {
+      const Manifest& m = manifests[slots[t].lib];
+      // Plugins' known defects live beside their adapter; built-ins' in impls/ (certify did those).
+      if (!m.plugin.empty()) certs[t].expected_failures = adapter_expected_failures(m, slots[t].scalar);
+      reused[slots[t].lib].emplace_back(slots[t].scalar, certify::certificate_json(spec, certs[t], o.certify.levels));
+    }
+  }
+  for (std::size_t i = 0; i < manifests.size(); ++i) {
+    if (manifests[i].route != "abi" || reused[i].empty() || libs[i].at("status") == "error") continue;
+    // In the manifest's scalar order, whichever route made them; every clause reproduced by the
+    // one command that certifies this library.
+    for (const std::string& scalar : manifests[i].scalars)
+      for (auto& [s, cert] : reused[i]) {
+        if (s != scalar) continue;
+        for (json& c : cert.at("clauses"))
+          if (!c.value("reproduce", "").empty()) c["reproduce"] = reproduce(manifests[i].name, {c.at("id").get<std::string>()});
+        libs[i]["certificates"].push_back(cert);
+      }
+    finish(libs[i], o.certify.cases.cases_per_family);
+  }
+
+  // Route vectors: one export for the run, each adapter in its own environment.
+  const fs::path vectors_dir = o.out / "vectors";
+  bool exported = false;
+  for (std::size_t i = 0; i < manifests.size(); ++i) {
+    const Manifest& m = manifests[i];
+    if (m.route != "vectors") continue;
+    const Environment env = read_environment(o.env_dir, m.name);
+    if (!env.installed) {
+      libs[i]["reason"] = env.reason;
+      continue;
+    }
+    if (!exported) {
+      vectors::BuildOptions b;
+      b.seed = o.certify.cases.seed;
+      b.cases_per_family = o.certify.cases.cases_per_family;
+      b.clauses = o.certify.clauses;
+      vectors::write_export(vectors_dir, vectors::render_export(spec, b));
+      exported = true;
+    }
+    const fs::path dir = o.out / m.name;
+    fs::create_directories(dir);
+    const fs::path results_file = dir / "results.json", log = dir / "adapter.log";
+    fs::remove(results_file);  // a stale file must not stand in for this run's
+    std::vector<std::string> argv = env.command;
+    argv.insert(argv.end(), {"--vectors", fs::absolute(vectors_dir).string(), "--out", fs::absolute(results_file).string()});
+    if (!o.quiet) std::cout << "third-party: running the " << m.name << " adapter ...\n" << std::flush;
+    const ProgramRun run = run_program(argv, env.env, log, o.adapter_timeout_s);
+    libs[i]["adapter_seconds"] = run.seconds;
+    libs[i]["adapter_log"] = log.string();
+    if (!run.started || run.timed_out || run.exit_code != 0 || !fs::exists(results_file)) {
+      libs[i]["status"] = "error";
+      libs[i]["reason"] = !run.started ? run.error
+                          : run.timed_out ? "the adapter ran past " + std::to_string(static_cast<int>(o.adapter_timeout_s)) + " s"
+                          : run.exit_code != 0 ? "the adapter exited with " + std::to_string(run.exit_code) + ": " + log_tail(log)
+                                               : "the adapter wrote no results file";
+      continue;
+    }
+    try {
+      const vectors::ResultsFile results = vectors::parse_results(vectors::read_json_file(results_file), results_file);
+      if (results.name != m.name) throw std::runtime_error("its results name the implementation '" + results.name + "', its manifest '" + m.name + "'");
+      if (results.scalar != m.scalars.front()) throw std::runtime_error("its results are " + results.scalar + ", its manifest says " + m.scalars.front());
+      const ref::Format format = results.format();
+      const vectors::VectorSet set = vectors::load_vectors(spec, vectors_dir, &format);
+      vectors::Grading g = vectors::grade(spec, set, results);
+      g.certificate.expected_failures = adapter_expected_failures(m, results.scalar);
+      for (auto& [clause, command] : g.certificate.reproduce) command = reproduce(m.name, {clause});
+      libs[i]["certificates"].push_back(certify::certificate_json(spec, g.certificate, g.levels));
+      finish(libs[i], o.certify.cases.cases_per_family);
+    } catch (const std::exception& e) {
+      libs[i]["status"] = "error";
+      libs[i]["reason"] = std::string("its results file cannot be graded: ") + e.what();
+    }
+  }
+
+  Outcome out;
+  json list = json::array();
+  int certified = 0, not_run = 0, errors = 0;
+  bool expected = true;
+  for (json& lib : libs) {
+    const std::string status = lib.at("status");
+    certified += status == "certified";
+    not_run += status == "not run";
+    errors += status == "error";
+    if (status == "certified") expected = expected && lib.at("as_expected").get<bool>();
+    for (const json& c : lib.at("certificates")) out.certificates.push_back(c);
+    list.push_back(std::move(lib));
+  }
+  out.section = {{"adapters_dir", o.adapters_dir.string()},
+                 {"environments", o.env_dir.string()},
+                 {"seed", o.certify.cases.seed},
+                 {"cases_per_family", o.certify.cases.cases_per_family},
+                 {"certified", certified},
+                 {"not_run", not_run},
+                 {"errors", errors},
+                 {"as_expected", expected && errors == 0},
+                 {"libraries", list}};
+  return out;
+}
+
+}  // namespace rotorcert::thirdparty
