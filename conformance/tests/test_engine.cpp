@@ -73,6 +73,33 @@ struct ZerosOnError : Normalizer<0> {
   }
 };
 
+/// from_matrix by Shepperd's largest pivot, the pivot component made positive (what GLM, Eigen and
+/// CQRlib do); Canonical = true then turns it to MAT-2's canonical sign, w > 0.
+template <bool Canonical>
+struct PivotFromMatrix : Normalizer<0> {
+  static ri::Status from_matrix(const ri::Mat3<double>& m, Q& out) {
+    auto at = [&](int r, int c) { return m[static_cast<std::size_t>(c * 3 + r)]; };
+    const double t = at(0, 0) + at(1, 1) + at(2, 2);
+    Q q;  // x, y, z, w
+    if (t >= at(0, 0) && t >= at(1, 1) && t >= at(2, 2)) {
+      const double w = std::sqrt(1 + t) / 2;
+      q = {(at(2, 1) - at(1, 2)) / (4 * w), (at(0, 2) - at(2, 0)) / (4 * w), (at(1, 0) - at(0, 1)) / (4 * w), w};
+    } else {
+      const int i = at(0, 0) >= at(1, 1) && at(0, 0) >= at(2, 2) ? 0 : at(1, 1) >= at(2, 2) ? 1 : 2;
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      const double v = std::sqrt(1 + at(i, i) - at(j, j) - at(k, k)) / 2;
+      q[static_cast<std::size_t>(i)] = v;
+      q[static_cast<std::size_t>(j)] = (at(j, i) + at(i, j)) / (4 * v);
+      q[static_cast<std::size_t>(k)] = (at(k, i) + at(i, k)) / (4 * v);
+      q[3] = (at(k, j) - at(j, k)) / (4 * v);
+    }
+    if (Canonical && q[3] < 0)
+      for (double& c : q) c = -c;
+    out = q;
+    return ri::Status::ok;
+  }
+};
+
 const spec::Spec& the_spec() {
   static const spec::Spec s = spec::load_spec(spec::resolve_spec_dir());
   return s;
@@ -129,6 +156,14 @@ TEST(Engine, AMissingOpIsNotSupported) {
   const auto r = run(ri::table<Normalizer<0>>(), "SLERP-1");
   EXPECT_EQ(r.outcome, engine::Outcome::not_supported);
   EXPECT_EQ(r.cases, 0u);
+}
+
+TEST(Engine, FromMatrixWithThePivotsSignFailsTheCanonicalSign) {
+  RC_CLAUSE("MAT-2");
+  EXPECT_EQ(run(ri::table<PivotFromMatrix<true>>(), "MAT-2").outcome, engine::Outcome::pass);
+  const auto r = run(ri::table<PivotFromMatrix<false>>(), "MAT-2");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);  // -q is the same rotation, but not MAT-2's answer
+  EXPECT_NE(r.worst_input.find("0x"), std::string::npos) << r.worst_input;
 }
 
 TEST(Engine, SameSeedSameCases) {

@@ -43,6 +43,7 @@ std::string unit_of(const engine::AbiOp& op) {
     case engine::Measure::rotation:
     case engine::Measure::quaternion:
     case engine::Measure::unit_rotation:
+    case engine::Measure::canonical_rotation:
     case engine::Measure::bivector:
     case engine::Measure::angle: return "rad";
     case engine::Measure::rigid:

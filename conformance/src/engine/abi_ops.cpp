@@ -92,7 +92,7 @@ std::vector<AbiOp> build() {
        [](const Values& in, std::size_t) { return one(clause::APPLY_3_apply_trivector(quat(in[0]), in[1][0])); }, {}});
   add({"to_matrix", {q}, {out("out_m", 9, Measure::matrix)}, false,
        [](const Values& in, std::size_t) { return one(clause::MAT_1_to_matrix(quat(in[0]))); }, {}});
-  add({"from_matrix", {m}, {out("out_q", 4, Measure::unit_rotation)}, false,
+  add({"from_matrix", {m}, {out("out_q", 4, Measure::canonical_rotation)}, false,
        [](const Values& in, std::size_t) { return one(clause::MAT_2_from_matrix(mat3(in[0]))); }, {}});
   add({"to_axis_angle", {q}, {out("out_angle", 1, Measure::angle), out("out_axis", 3, Measure::vector)}, false,
        [](const Values& in, std::size_t) {

@@ -7,6 +7,7 @@ namespace {
 
 bool is_quaternion_output(const Array& a) {
   return a.measure == Measure::rotation || a.measure == Measure::quaternion || a.measure == Measure::unit_rotation ||
+         a.measure == Measure::canonical_rotation ||
          a.measure == Measure::rigid || a.measure == Measure::unit_rigid;
 }
 

@@ -91,6 +91,15 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
     }
     case Measure::unit_rotation:
       return max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got)));
+    case Measure::canonical_rotation: {
+      // MAT-2: q and -q are one rotation, but from_matrix has one answer, w > 0. A result on the
+      // other side of the reference (negative dot product) is off by |w_ref|: within the bar (a
+      // half turn, w near 0) either sign passes, beyond it the wrong sign fails.
+      const Real rotation =
+          max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got)));
+      const Real dot = got[0] * want[0] + got[1] * want[1] + got[2] * want[2] + got[3] * want[3];
+      return dot < 0 ? max(rotation, Real(abs(want[3]))) : rotation;
+    }
     case Measure::vector:
       return clause::METRIC_3_vector_error<Real>({got[0], got[1], got[2]}, {want[0], want[1], want[2]}, tiny);
     case Measure::point: {

@@ -27,6 +27,7 @@ const char* measure_name(engine::Measure m) {
     case Measure::rotation: return "rotation";
     case Measure::quaternion: return "quaternion";
     case Measure::unit_rotation: return "unit_rotation";
+    case Measure::canonical_rotation: return "canonical_rotation";
     case Measure::vector: return "vector";
     case Measure::point: return "point";
     case Measure::bivector: return "bivector";
@@ -46,6 +47,7 @@ const char* measure_doc(engine::Measure m) {
     case Measure::rotation: return "METRIC-1: the angle in radians of the rotation between got and expected, sign-free (q and -q are one rotation)";
     case Measure::quaternion: return "max(METRIC-1, max_i |q_i - r_i| / |r|): the quaternion itself, sign and scale included (COMPOSE-1, INV-1 are defined on non-unit input)";
     case Measure::unit_rotation: return "max(METRIC-1, METRIC-6 = | |q| - 1 |): a rotation that must be a unit quaternion";
+    case Measure::canonical_rotation: return "unit_rotation, and when got . expected < 0 at least |w_expected|: the canonical sign w > 0 of MAT-2, enforced once |w| exceeds the bar";
     case Measure::vector: return "METRIC-3: |v - v_ref| / |v_ref|, absolute when |v_ref| is below the smallest normal number";
     case Measure::point: return "|p - p_ref| / max(1, |p|, |t|, ...) over the lengths of the case's inputs (rigid operations)";
     case Measure::bivector: return "METRIC-5: error of a rotation log, in radians";

@@ -23,6 +23,8 @@ enum class Measure {
   quaternion,     // quaternion defined on unnormalised input (COMPOSE-1, INV-1): METRIC-1 and the
                   // componentwise relative error max_i |q_i - r_i| / |r| (scale and sign count)
   unit_rotation,  // quaternion that must be unit: METRIC-1 and METRIC-6
+  canonical_rotation,  // from_matrix (MAT-2): unit_rotation, and the canonical sign (w > 0) once
+                       // the reference |w| is above the bar: a wrong sign costs |w_ref|
   vector,         // METRIC-3, relative to |reference|
   point,          // |p - p_ref| / max(1, |inputs|): rigid operations (DQ-3, AXIS-1, SKIN-*)
   bivector,       // METRIC-5, radians (logs)
