@@ -207,19 +207,25 @@ engine::ClauseResult clause_result_from_json(const json& j) {
   return r;
 }
 
+std::map<std::string, std::string> read_expected_failures(const std::filesystem::path& file, const std::string& table,
+                                                          const std::string& scalar) {
+  std::map<std::string, std::string> result;
+  if (!std::filesystem::exists(file)) return result;
+  const json j = spec::read_json(file);
+  for (const json& f : j.at("failures"))
+    if (f.at("table") == table && f.at("scalar") == scalar) result[f.at("clause")] = f.at("why");
+  return result;
+}
+
 std::map<std::string, std::string> expected_failures(const std::string& impl_name, const std::string& scalar) {
   // The file sits in the directory of the implementation that provides the table; a directory
   // may provide several tables (glm_quat also provides glm_mix), so every file is read.
   std::map<std::string, std::string> result;
   const std::filesystem::path impls = std::filesystem::path(ROTORCERT_SOURCE_DIR) / "impls";
   std::error_code ec;
-  for (const auto& dir : std::filesystem::directory_iterator(impls, ec)) {
-    const auto file = dir.path() / "expected_failures.json";
-    if (!std::filesystem::exists(file)) continue;
-    const json j = spec::read_json(file);
-    for (const json& f : j.at("failures"))
-      if (f.at("table") == impl_name && f.at("scalar") == scalar) result[f.at("clause")] = f.at("why");
-  }
+  for (const auto& dir : std::filesystem::directory_iterator(impls, ec))
+    for (auto& [clause, why] : read_expected_failures(dir.path() / "expected_failures.json", impl_name, scalar))
+      result[clause] = why;
   return result;
 }
 

@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <rotorcert/certify/certificate.hpp>
+
 extern char** environ;
 
 namespace rotorcert::thirdparty {
@@ -113,13 +115,7 @@ Environment read_environment(const fs::path& env_dir, const std::string& name) {
 }
 
 std::map<std::string, std::string> adapter_expected_failures(const Manifest& m, const std::string& scalar) {
-  std::map<std::string, std::string> result;
-  const fs::path file = m.dir / "expected_failures.json";
-  if (!fs::exists(file)) return result;
-  const json j = read_json(file);
-  for (const json& f : j.at("failures"))
-    if (f.at("table") == m.name && f.at("scalar") == scalar) result[f.at("clause")] = f.at("why");
-  return result;
+  return certify::read_expected_failures(m.dir / "expected_failures.json", m.name, scalar);
 }
 
 ProgramRun run_program(const std::vector<std::string>& argv, const std::vector<std::pair<std::string, std::string>>& extra_env,

@@ -57,6 +57,12 @@ struct Certificate {
   json fp_environment;
 };
 
+/// The entries of one expected_failures.json (`{"failures": [{"table", "scalar", "clause", "why"}]}`)
+/// for this table and scalar type, clause -> why; empty when the file does not exist. The one
+/// reader of that format, for built-in tables and third-party adapters alike.
+std::map<std::string, std::string> read_expected_failures(const std::filesystem::path& file, const std::string& table,
+                                                          const std::string& scalar);
+
 /// Known defects of a built-in implementation: impls/<name>/expected_failures.json, entries of
 /// this table's scalar type. Empty when the file does not exist.
 std::map<std::string, std::string> expected_failures(const std::string& impl_name, const std::string& scalar);
