@@ -15,6 +15,9 @@ void add_certify_options(CLI::App& app, CertifyCli& o) {
   app.add_option("--out", o.out, "Directory for report.json, report.md, report.html")->required();
   app.add_option("--seed", o.seed, "Seed of the reference vectors (same seed, same report.json)")->capture_default_str();
   app.add_option("--cases", o.cases, "Cases per family of reference vectors")->check(CLI::Range(1, 100000))->capture_default_str();
+  app.add_option("--search", o.search,
+                 "Worst-case search: implementation calls per check spent walking ulps around the worst input (0 = none)")
+      ->check(CLI::Range(0, 100000))->capture_default_str();
   app.add_option("--level", o.levels, "Certify only this level (Core, Interp, Blend, Rigid, Skinning, Robust); repeatable");
   app.add_option("--clause", o.clauses, "Certify only this clause (e.g. SLERP-1); repeatable");
   app.add_option("--timeout", o.timeout_s, "Wall-clock limit per clause, seconds (TIMEOUT beyond)")
@@ -30,6 +33,7 @@ certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o
   certify::CertifyOptions opt;
   opt.cases.seed = o.seed;
   opt.cases.cases_per_family = o.cases;
+  opt.cases.search_budget = o.search;
   for (const std::string& l : spec.levels)
     if (l != "Meta" && (o.levels.empty() || std::find(o.levels.begin(), o.levels.end(), l) != o.levels.end()))
       opt.levels.push_back(l);

@@ -15,7 +15,8 @@ namespace rotorcert::cli {
 
 struct CertifyCli {
   std::uint64_t seed = 1;
-  int cases = 64;
+  int cases = certify::kDefaultCasesPerFamily;    // LEVEL-1: at least 512 cases per family by default
+  int search = certify::kDefaultSearchBudget;  // worst-case search: implementation calls per check
   std::vector<std::string> levels;  // empty: every implementation level
   std::vector<std::string> clauses;
   double timeout_s = 30;

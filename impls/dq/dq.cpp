@@ -287,7 +287,9 @@ struct Dq {
     return Status::ok;
   }
 
-  /// DQ-2 of the normalised inputs (a non-unit input stands for its DQ-4 normalisation).
+  /// DQ-2 on the DQ-4-normalised inputs. The clause defines the product of the inputs as given;
+  /// the dual norm is multiplicative, so this is that product's DQ-4 normalisation, the same
+  /// rigid motion, which is what METRIC-7 compares.
   static Status dq_compose(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, rci::DualQuat<S>& out) {
     if (!valid(load(a)) || !valid(load(b))) return Status::domain_error;
     out = store(normalized(load(a)) * normalized(load(b)));

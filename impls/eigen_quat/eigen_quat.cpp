@@ -58,9 +58,12 @@ struct EigenQuat {
       "Eigen 3.4 as shipped by Debian 12 (Quaternion, AngleAxis), no checks added. Bivectors "
       "[e23,e31,e12] rotate as q._transformVector(b); trivectors pass through unchanged. nlerp "
       "= (coeffs lerp).normalized() with the dot-sign flip of Eigen's own slerp (the rule an "
-      "Eigen user copies). QLB with Eigen operations as a user would: weighted sum of coeffs, "
-      "sign flip by dot with the FIRST influence, normalized(). No log/exp, no log-blend, no "
-      "dual quaternions (NOT_SUPPORTED).";
+      "Eigen user copies). Eigen has no n-way blend: QLB is glue written with Eigen operations "
+      "following QLB-1's rules (weighted sum of coeffs, sign flip by the dot with the first "
+      "influence of positive weight, normalized()), so only Eigen's arithmetic is certified. No "
+      "log/exp, no log-blend, no dual quaternions (NOT_SUPPORTED). Declares Eigen's documented "
+      "preconditions (DECL-1): unit quaternions for the rotation operations, t in [0, 1] for "
+      "slerp, a rotation matrix for Quaternion(Matrix3), a unit axis for AngleAxis.";
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       // Core
@@ -72,6 +75,15 @@ struct EigenQuat {
       "QLB-1",
       // Robust
       "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9", nullptr};
+  // DECL-1: Eigen's documented preconditions (Eigen 3.4, Geometry/):
+  //   Quaternion.h:253 "Operations interpreting the quaternion as rotation have undefined behavior
+  //     if the quaternion is not normalized"; :587 toRotationMatrix "The quaternion is required to
+  //     be normalized"; :774 slerp "at the parameter t in [0;1]"; :573 Quaternion(Matrix3) "xpr
+  //     is assumed to be rotation matrix"; AngleAxis.h:23 "the axis vector must be normalized".
+  static constexpr const char* const preconditions[] = {
+      "apply_vector:unit_quaternion", "apply_bivector:unit_quaternion", "to_matrix:unit_quaternion",
+      "slerp:unit_quaternion", "slerp:t_in_unit_interval", "from_matrix:rotation_matrix", "from_axis_angle:unit_axis",
+      nullptr};
 
   // -- Core --
 
@@ -147,10 +159,13 @@ struct EigenQuat {
   // -- Blend --
 
   static Status blend_qlb(std::span<const Quat<S>> q, std::span<const S> w, Quat<S>& out) {
+    if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     Eigen::Matrix<S, 4, 1> sum = Eigen::Matrix<S, 4, 1>::Zero();
+    std::size_t pivot = 0;  // QLB-1: the first influence of positive weight
+    while (pivot + 1 < q.size() && !(w[pivot] > S(0))) ++pivot;
     for (std::size_t i = 0; i < q.size(); ++i) {
       const EQuat<S> qi = to_eigen(q[i]);
-      sum += (qi.dot(to_eigen(q[0])) < S(0) ? -w[i] : w[i]) * qi.coeffs();
+      sum += (qi.dot(to_eigen(q[pivot])) < S(0) ? -w[i] : w[i]) * qi.coeffs();
     }
     out = from_eigen(EQuat<S>(sum.normalized()));  // Quaternion(Vector4) reads x, y, z, w
     return Status::ok;

@@ -78,9 +78,11 @@ struct GlmQuat {
   static constexpr const char* description =
       "GLM 0.9.9.8 as shipped by Debian 12, default configuration, no checks added. Bivectors "
       "[e23,e31,e12] rotate as q * b (GLM users keep axial vectors in vec3); trivectors pass "
-      "through unchanged. nlerp = normalize(lerp(a, b, t)) without hemisphere flip (how GLM "
-      "users write it). GLM has no n-way blend: QLB and DLB are written with GLM operators as a "
-      "user would (weighted sum, sign flip by dot with the FIRST influence, glm::normalize). "
+      "through unchanged. GLM has no nlerp and no n-way blend: nlerp, QLB and DLB are glue "
+      "written with GLM operators following NLERP-1, QLB-1 and DQ-6 (hemisphere flip by glm::dot "
+      "with the first influence of positive weight, glm::lerp, glm::normalize), so only GLM's "
+      "arithmetic is certified. Declares GLM's documented preconditions (DECL-1): a unit axis "
+      "for angleAxis, a pure rotation matrix for quat_cast, t in [0, 1] for lerp. "
       "No ScLERP (NOT_SUPPORTED). Rigid motions via gtx/dual_quaternion; LBS with mat3_cast "
       "matrices divided by the weight sum; AXIS-1 as c + angleAxis(angle, normalize(u)) * (p - c).";
   static constexpr std::uint32_t levels =
@@ -100,6 +102,12 @@ struct GlmQuat {
       // Robust
       "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9",
       nullptr};
+  // DECL-1: GLM 0.9.9.8's documented preconditions: ext/quaternion_trigonometric.hpp:53
+  // angleAxis "axis ... must be normalized"; gtc/quaternion.hpp:92 quat_cast "Converts a pure
+  // rotation 3 * 3 matrix"; ext/quaternion_common.hpp:60 lerp "defined in the range [0, 1]".
+  static constexpr const char* const preconditions[] = {"from_axis_angle:unit_axis", "rotate_about_axis:unit_axis",
+                                                        "from_matrix:rotation_matrix", "nlerp:t_in_unit_interval",
+                                                        nullptr};
 
   // -- Core --
 
@@ -172,21 +180,24 @@ struct GlmQuat {
     out = from_glm(glm::slerp(to_glm(a), to_glm(b), t));
     return Status::ok;
   }
-  // How GLM users write nlerp: no hemisphere flip.
+  // GLM has no nlerp: NLERP-1 written with GLM operators (flip b iff dot < 0, lerp, normalize).
   static Status nlerp(const Quat<S>& a, const Quat<S>& b, const S& t, Quat<S>& out) {
-    out = from_glm(glm::normalize(glm::lerp(to_glm(a), to_glm(b), t)));
+    const glm::qua<S> ga = to_glm(a), gb = to_glm(b);
+    out = from_glm(glm::normalize(glm::lerp(ga, glm::dot(ga, gb) < S(0) ? -gb : gb, t)));
     return Status::ok;
   }
 
   // -- Blend --
 
-  // sum w_i s_i q_i with s_i = -1 iff dot(q_i, q_0) < 0 (the first influence, whatever its
-  // weight: what a GLM user writes), then glm::normalize.
+  // sum w_i s_i q_i with s_i = -1 iff dot(q_i, q_p) < 0, p the first influence of positive
+  // weight (QLB-1), then glm::normalize.
   static Status blend_qlb(std::span<const Quat<S>> q, std::span<const S> w, Quat<S>& out) {
+    if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     glm::qua<S> sum = zero_quat<S>();
+    const std::size_t p = pivot(w);
     for (std::size_t i = 0; i < q.size(); ++i) {
       const glm::qua<S> qi = to_glm(q[i]);
-      const S wi = glm::dot(qi, to_glm(q[0])) < S(0) ? -w[i] : w[i];
+      const S wi = glm::dot(qi, to_glm(q[p])) < S(0) ? -w[i] : w[i];
       sum += wi * qi;
     }
     out = from_glm(glm::normalize(sum));
@@ -216,6 +227,7 @@ struct GlmQuat {
   }
   // DLB with GLM operators (glm::lerp(dualquat) is the two-influence case of the same rule).
   static Status dq_blend(std::span<const DualQuat<S>> d, std::span<const S> w, DualQuat<S>& out) {
+    if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     std::vector<glm::tdualquat<S>> g;
     for (const DualQuat<S>& di : d) g.push_back(to_glm(di));
     out = from_glm(dlb(g, w));
@@ -234,6 +246,7 @@ struct GlmQuat {
   // divide by the weight sum (SKIN-1 defines LBS with weights w_i / W).
   static Status skin_linear(std::span<const Quat<S>> q, std::span<const Vec3<S>> t, std::span<const S> w,
                             const Vec3<S>& v, Vec3<S>& out) {
+    if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     glm::mat<3, 3, S> m(S(0));
     glm::vec<3, S> tsum(S(0));
     S wsum(0);
@@ -247,6 +260,7 @@ struct GlmQuat {
   }
   static Status skin_dual_quaternion(std::span<const Quat<S>> q, std::span<const Vec3<S>> t, std::span<const S> w,
                                      const Vec3<S>& v, Vec3<S>& out) {
+    if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     std::vector<glm::tdualquat<S>> d;
     for (std::size_t i = 0; i < q.size(); ++i) d.emplace_back(to_glm(q[i]), to_glm(t[i]));
     out = from_glm(dlb(d, w) * to_glm(v));
@@ -254,10 +268,18 @@ struct GlmQuat {
   }
 
  private:
+  /// The first influence of positive weight (QLB-1, DQ-6); 0 if none (the call is then outside
+  /// the domain, EDGE-9, and GLM computes whatever it computes).
+  static std::size_t pivot(std::span<const S> w) {
+    std::size_t p = 0;
+    while (p + 1 < w.size() && !(w[p] > S(0))) ++p;
+    return p;
+  }
   static glm::tdualquat<S> dlb(const std::vector<glm::tdualquat<S>>& d, std::span<const S> w) {
     glm::tdualquat<S> sum(zero_quat<S>(), zero_quat<S>());
+    const std::size_t p = pivot(w);
     for (std::size_t i = 0; i < d.size(); ++i) {
-      const S wi = glm::dot(d[i].real, d[0].real) < S(0) ? -w[i] : w[i];
+      const S wi = glm::dot(d[i].real, d[p].real) < S(0) ? -w[i] : w[i];
       sum = sum + wi * d[i];
     }
     return glm::normalize(sum);
@@ -279,6 +301,11 @@ struct GlmMix {
   static constexpr std::uint32_t levels = RC_LEVEL_INTERP;
   static constexpr const char* const clauses[] = {"LOG-1",   "LOG-2",   "EXP-1",   "EXP-2",   "SLERP-1", "SLERP-2",
                                                   "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1", nullptr};
+  // ACC-1: glm::mix is documented as oriented (ext/quaternion_common.hpp: "The interpolation is
+  // oriented ... For short path spherical linear interpolation, use the slerp function"): the
+  // long arc for obtuse pairs is its declared convention, not a defect.
+  static constexpr const char* const conventions[] = {"slerp:oriented", nullptr};
+  static constexpr const char* const preconditions[] = {"nlerp:t_in_unit_interval", nullptr};
 
   static Status log(const Quat<float>& q, Vec3<float>& out) { return Base::log(q, out); }
   static Status exp(const Vec3<float>& v, Quat<float>& out) { return Base::exp(v, out); }

@@ -124,7 +124,8 @@ struct MotorPga {
     return Status::ok;
   }
 
-  /// MOTOR-3: the geometric product of the unit motors (apply b first).
+  /// MOTOR-3: the geometric product of the unit motors (apply b first): DQ-4 of DQ-2's product of
+  /// the inputs as given (the motor norm is multiplicative), the rigid motion METRIC-7 compares.
   static Status dq_compose(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, rci::DualQuat<S>& out) {
     if (!valid_dq(a) || !valid_dq(b)) return Status::domain_error;
     out = pga::to_dual_quaternion(unit_motor(a) * unit_motor(b));

@@ -27,8 +27,9 @@ const rc_impl* find_builtin(const std::string& name, std::uint32_t scalar) {
 }
 
 std::string validate_table(const rc_impl& t) {
-  if (t.abi_version != RC_ABI_VERSION)
-    return "table built against ABI " + std::to_string(t.abi_version) + ", expected " + std::to_string(RC_ABI_VERSION);
+  if (t.abi_version < RC_ABI_VERSION_MIN || t.abi_version > RC_ABI_VERSION)
+    return "table built against ABI " + std::to_string(t.abi_version) + ", expected " +
+           std::to_string(RC_ABI_VERSION_MIN) + " to " + std::to_string(RC_ABI_VERSION);
   if (t.name == nullptr || *t.name == '\0') return "table has no name";
   if (t.version == nullptr || t.description == nullptr) return std::string(t.name) + ": version or description is NULL";
   if (t.scalar == RC_SCALAR_FLOAT32 && (t.f32 == nullptr || t.f64 != nullptr))
@@ -48,6 +49,14 @@ std::string validate_table(const rc_impl& t) {
   const bool has_simd = t.simd_targets != nullptr;
   if (has_simd != (t.select_target != nullptr) || has_simd != (t.current_target != nullptr))
     return std::string(t.name) + ": simd_targets, select_target and current_target go together";
+  if (t.abi_version >= 2)
+    for (const char* const* list : {t.preconditions, t.conventions})
+      for (int i = 0; list != nullptr; ++i) {
+        if (i > 4096) return std::string(t.name) + ": a declaration list is not NULL-terminated";
+        if (list[i] == nullptr) break;
+        if (std::strchr(list[i], ':') == nullptr)
+          return std::string(t.name) + ": declaration \"" + list[i] + "\" is not of the form op:id (DECL-1)";
+      }
   return {};
 }
 
@@ -63,9 +72,13 @@ std::unique_ptr<Plugin> Plugin::load(const std::string& path) {
     throw PluginError("plugin " + path + " does not export " + RC_IMPL_ENTRY_SYMBOL);
   rc_impl_entry_fn entry;
   std::memcpy(&entry, &symbol, sizeof entry);  // object pointer to function pointer, POSIX-style
+  // The newest ABI the plugin speaks: version 2, else version 1 (a plugin built before the
+  // declarations existed answers NULL to 2).
+  std::uint32_t version = RC_ABI_VERSION;
+  while (version > RC_ABI_VERSION_MIN && entry(version, 0) == nullptr) --version;
   for (std::uint32_t i = 0;; ++i) {
     if (i >= 64) throw PluginError("plugin " + path + " returns more than 64 tables");
-    const rc_impl* t = entry(RC_ABI_VERSION, i);
+    const rc_impl* t = entry(version, i);
     if (t == nullptr) break;
     const std::string problem = validate_table(*t);
     if (!problem.empty()) throw PluginError("plugin " + path + ": " + problem);

@@ -120,6 +120,33 @@ TEST(Skinning, DualQuaternionSkinningIsDLBThenApply) {
   });
 }
 
+TEST(Skinning, DualQuaternionSkinningDecidesTheHemisphereTieOnTheGivenRotations) {
+  RC_CLAUSE("SKIN-2");
+  RC_CLAUSE("DQ-6");
+  RC_CLAUSE("EDGE-3");
+  // q_0 . q_1 = 0 exactly, with different norms: the real parts q_i/|q_i| of DQ-1 are rounded
+  // at the reference precision, and their dot can come out as +-tiny. DQ-6 flips iff
+  // real_1 . real_0 < 0, whose sign is that of q_1 . q_0 = 0: no flip, for q_1 and for -q_1.
+  const std::vector<std::pair<Q, Q>> ties = {
+      {Q{Real(0), Real(1), Real(2), Real(3)}, Q{Real(0), Real(3), Real(0), Real(-1)}},
+      {Q{Real(7), Real(2), Real(3), Real(5)}, Q{Real(0), Real(3), Real(-2), Real(0)}},
+      {Q{Real(1), Real(1), Real(1), Real(1)}, Q{Real(0), Real(1), Real(2), Real(-3)}},
+      {Q{Real(11), Real(3), Real(5), Real(7)}, Q{Real(5), Real(0), Real(-11), Real(0)}}};
+  const std::vector<V3> t{{Real(1), Real(0), Real(0)}, {Real(0), Real(1), Real(0)}};
+  const std::vector<Real> w{Real(1), Real(1)};
+  const V3 v{Real(1), Real(2), Real(3)};
+  for (const auto& [q0, q1_in] : ties)
+    for (const Real& sign : {Real(1), Real(-1)}) {
+      const Q q1 = sign * q1_in;
+      ASSERT_TRUE(dot(q0, q1) == 0);
+      const DQ s0 = DQ_1_from_rotation_translation(q0, t[0]).value, s1 = DQ_1_from_rotation_translation(q1, t[1]).value;
+      const DQ unflipped = DQ_4_normalize(DQ{s0.real + s1.real, s0.dual + s1.dual}).value;
+      const std::vector<Q> q{q0, q1};
+      EXPECT_TRUE(near(SKIN_2_dual_quaternion<Real>(q, t, w, v).value, DQ_3_apply_point(unflipped, v).value))
+          << "q1 = " << q1.w << " " << q1.x << " " << q1.y << " " << q1.z;
+    }
+}
+
 // ---- SKIN-3 ----------------------------------------------------------------------------------
 
 TEST(Skinning, RigidCasesEqualTheRigidTransform) {

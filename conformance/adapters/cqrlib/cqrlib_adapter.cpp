@@ -115,6 +115,12 @@ struct CQRlibTable {
       "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5",
       // Robust (EDGE-9 judges weighted ops only; CQRlib has none)
       "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", nullptr};
+  // DECL-1, CQRlib's documented preconditions (cqrlib.h): :1457 CQRMatrix2Quaternion "Form the
+  // quaternion from a 3x3 rotation matrix R"; :1449 CQRRotateByQuaternion "w = qvq*" (a rotation
+  // only for a unit q: it does not divide by |q|^2); :1492 HLERP interpolates "quaternions
+  // representing rotations" linearly "between the radii" (unit inputs give the rotation).
+  static constexpr const char* const preconditions[] = {"from_matrix:rotation_matrix", "apply_vector:unit_quaternion",
+                                                        "apply_bivector:unit_quaternion", "slerp:unit_quaternion", nullptr};
 
   // -- Core --
 

@@ -36,7 +36,8 @@ std::string reproduce_command(const CertifyOptions& o, const Target& t, const st
   std::string s = o.reproduce_prefix + " certify ";
   s += t.plugin_path.empty() ? "--impl " + t.info.name : "--plugin " + t.plugin_path;
   s += " --scalar " + t.info.scalar + " --clause " + clause + " --seed " + std::to_string(o.cases.seed) + " --cases " +
-       std::to_string(o.cases.cases_per_family) + " --verbose --out rotorcert-" + clause;
+       std::to_string(o.cases.cases_per_family) + " --search " + std::to_string(o.cases.search_budget) +
+       " --verbose --out rotorcert-" + clause;
   return s;
 }
 
@@ -61,7 +62,7 @@ std::string run_clause_in_child(const spec::Spec& spec, const Target& target, co
   ClauseResult r = engine::run_clause(table, spec, clause, options.cases, hooks);
   if (r.outcome == Outcome::fail && options.detect_conventions) {
     channel.progress("convention detection for " + clause);
-    r.conventions = engine::detect_conventions(table, spec, clause, options.cases);
+    engine::detect_conventions(table, spec, clause, options.cases, r);
   }
   return json{{"result", to_json(r, true)}, {"fp_environment", environment}}.dump();
 }
@@ -222,6 +223,7 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
 json options_json(const CertifyOptions& o) {
   return {{"seed", o.cases.seed},
           {"cases_per_family", o.cases.cases_per_family},
+          {"search_budget", o.cases.search_budget},
           {"levels", o.levels},
           {"clauses", o.clauses},
           {"timeout_s", o.limits.timeout_s},

@@ -87,7 +87,7 @@ void finish(json& lib, int cases_per_family) {
     for (const json& r : c.at("clauses")) {
       if (!r.at("claimed").get<bool>()) continue;
       const std::string outcome = r.at("outcome");
-      const bool good = outcome == "PASS" || outcome == "QUALITY_WARNING";
+      const bool good = certify::claimed_clause_good(r);
       if (r.at("expected_failure").is_null()) {
         expected = expected && good;  // a claimed clause NOT_SUPPORTED too, as certify::as_expected
       } else if (outcome != "FAIL") {
@@ -104,6 +104,39 @@ void finish(json& lib, int cases_per_family) {
   for (const json& c : lib.at("certificates"))
     if (std::find(versions.begin(), versions.end(), c.at("version")) == versions.end()) versions.push_back(c.at("version"));
   lib["version"] = versions.size() == 1 ? versions.front() : versions;
+}
+
+/// Issue #16: every defect of a third-party library comes with a reproducer in the library's own
+/// language that calls it directly (conformance/adapters/NAME/reproducers/, named by the
+/// "reproducer" field of expected_failures.json, else by the clause), with the command that runs it
+/// and the ctest that checks it still shows the defect.
+void attach_reproducers(json& lib, const Manifest& m) {
+  if (!lib.contains("defects")) return;
+  std::map<std::string, std::string> named;  // scalar/clause -> file
+  const fs::path ef = m.dir / "expected_failures.json";
+  if (fs::exists(ef))
+    for (const json& f : spec::read_json(ef).at("failures"))
+      if (f.contains("reproducer"))
+        named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
+  for (json& d : lib.at("defects")) {
+    const std::string clause = d.at("clause"), scalar = d.at("scalar");
+    std::string file;
+    if (const auto it = named.find(scalar + "/" + clause); it != named.end()) file = it->second;
+    else
+      for (const char* ext : {".cpp", ".py", ".js"})
+        if (fs::exists(m.dir / "reproducers" / (clause + ext))) file = clause + ext;
+    if (file.empty() || !fs::exists(m.dir / "reproducers" / file)) {
+      d["reproducer"] = nullptr;
+      continue;
+    }
+    const fs::path path = m.dir / "reproducers" / file;
+    const std::string stem = fs::path(file).stem().string(), ext = fs::path(file).extension().string();
+    std::string run = ext == ".py" ? "build/adapters/" + m.name + "/venv/bin/python " + path.string()
+                      : ext == ".js" ? "NODE_PATH=build/adapters/" + m.name + "/node_modules node " + path.string()
+                                     : "ctest --preset default -R '^reproducer_" + m.name + "_" + stem + "$' -V";
+    d["reproducer"] = {{"file", path.string()}, {"language", ext == ".cpp" ? "C++" : ext == ".py" ? "Python" : "JavaScript"},
+                       {"run", run}, {"ctest", "reproducer_" + m.name + "_" + stem}};
+  }
 }
 
 }  // namespace
@@ -128,7 +161,10 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
   // Seed and cases other than the defaults travel with the reproduce commands.
   std::string run_options;
   if (o.certify.cases.seed != 1) run_options += " --seed " + std::to_string(o.certify.cases.seed);
-  if (o.certify.cases.cases_per_family != 64) run_options += " --cases " + std::to_string(o.certify.cases.cases_per_family);
+  if (o.certify.cases.cases_per_family != certify::kDefaultCasesPerFamily)
+    run_options += " --cases " + std::to_string(o.certify.cases.cases_per_family);
+  if (o.certify.cases.search_budget != certify::kDefaultSearchBudget)
+    run_options += " --search " + std::to_string(o.certify.cases.search_budget);
   auto reproduce = [&](const std::string& name, const std::vector<std::string>& clauses) {
     std::string s = reproduce_command(name, clauses);
     return s.insert(s.find(" --out"), run_options);
@@ -210,6 +246,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
         libs[i]["certificates"].push_back(cert);
       }
     finish(libs[i], o.certify.cases.cases_per_family);
+    attach_reproducers(libs[i], manifests[i]);
   }
 
   // Route vectors: one export for the run, each adapter in its own environment.
@@ -250,7 +287,16 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       continue;
     }
     try {
-      const vectors::ResultsFile results = vectors::parse_results(vectors::read_json_file(results_file), results_file);
+      vectors::ResultsFile results = vectors::parse_results(vectors::read_json_file(results_file), results_file);
+      // DECL-1: the manifest declares the library's documented preconditions and chosen
+      // conventions (with their citations); the results file may add its own.
+      for (const char* key : {"declared_preconditions", "declared_conventions"})
+        if (const auto d = m.raw.find(key); d != m.raw.end() && d->is_array())
+          for (const json& x : *d) {
+            const std::string decl = x.is_object() ? x.at("id").get<std::string>() : x.get<std::string>();
+            auto& into = std::string(key) == "declared_preconditions" ? results.preconditions : results.conventions;
+            if (std::find(into.begin(), into.end(), decl) == into.end()) into.push_back(decl);
+          }
       if (results.name != m.name) throw std::runtime_error("its results name the implementation '" + results.name + "', its manifest '" + m.name + "'");
       if (results.scalar != m.scalars.front()) throw std::runtime_error("its results are " + results.scalar + ", its manifest says " + m.scalars.front());
       const ref::Format format = results.format();
@@ -260,6 +306,8 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       for (auto& [clause, command] : g.certificate.reproduce) command = reproduce(m.name, {clause});
       libs[i]["certificates"].push_back(certify::certificate_json(spec, g.certificate, g.levels));
       finish(libs[i], o.certify.cases.cases_per_family);
+      attach_reproducers(libs[i], m);
+    attach_reproducers(libs[i], manifests[i]);
     } catch (const std::exception& e) {
       libs[i]["status"] = "error";
       libs[i]["reason"] = std::string("its results file cannot be graded: ") + e.what();

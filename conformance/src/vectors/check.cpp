@@ -130,6 +130,8 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
     return true;
   };
 
+  const engine::Declarations declared{{results.preconditions.begin(), results.preconditions.end()},
+                                      {results.conventions.begin(), results.conventions.end()}};
   std::vector<std::string> graded;  // clauses with at least one result judged
   std::vector<engine::ClauseResult> all;
   for (const spec::Clause& cl : spec.clauses) {
@@ -177,7 +179,7 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
               const engine::Observed log_got{got.call_rc, got.status, {}};
               judge.record(engine::judge_round_trip(tc, v->input, log_got, got, format), op, v->input, format);
             } else {
-              judge.record(engine::judge_case(op, tc, v->input, got, format), op, v->input, format);
+              judge.record(engine::judge_case(op, tc, v->input, got, format, nullptr, &declared), op, v->input, format);
             }
           }
       }
@@ -197,6 +199,8 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
   t.description = results.description;
   t.source = "results file";
   t.plugin_path = results.file.string();
+  t.declared_preconditions = results.preconditions;
+  t.declared_conventions = results.conventions;
   t.claimed_clauses = results.claimed_clauses ? *results.claimed_clauses : graded;
   for (const std::string& op : ops_with_results)
     for (const std::string& abi : abi_ops_of(op))

@@ -16,6 +16,11 @@ const std::vector<std::pair<std::string, std::string>>& vocabulary() {
       {"Identity", "Identity rotations (and the zero log vector, the identity matrix): results are defined exactly (EDGE-1)."},
       {"SmallAngle", "Rotation angles or angles between the inputs of 1e-9..1e-3 rad: cancellation in acos / sin(x)/x (EDGE-2)."},
       {"AngleNear2Pi", "Rotation angles in (2 pi - 1, 2 pi), i.e. w < -cos(1/2): the branch of the angle (AXANG-1)."},
+      {"AngleSweep", "Rotation angles (or pair distances) from a logarithmic sweep over 1e-9..pi, every decade sampled (LEVEL-1)."},
+      {"NearFullTurn", "Rotation angles 1e-9..1e-1 short of 2 pi: w near -1, where log, axis-angle and matrix extraction lose accuracy."},
+      {"NearAntipodal", "b = -a rotated by 1e-9..1e-1 rad: the hemisphere rule flips and the interpolation is short."},
+      {"NearIdentical", "b = a rotated by 2^-1 .. 2^-(p+2) rad: every scale of the format between the pair."},
+      {"UnequalScales", "Influences scaled by different powers of two: each means its normalised rotation or motion (EDGE-5)."},
       {"NearHalfTurn", "Rotation matrices of angles within 1e-3 of pi: trace-based extraction loses accuracy (MAT-2)."},
       {"HemisphereTie", "Two quaternions whose dot product is exactly 0: the tie of the hemisphere rule (EDGE-3)."},
       {"Antipodal", "b = -a exactly: the same rotation, the interpolation must be constant (EDGE-3)."},
@@ -62,6 +67,19 @@ std::vector<std::string> flags_for_label(const std::string& label) {
   else if (label == "angle 1e-9 .. 1e-3") f = {"SmallAngle"};
   else if (label == "angle in (2pi - 1, 2pi)") f = {"AngleNear2Pi"};
   else if (label == "near half turn") f = {"NearHalfTurn"};
+  else if (label == "angle sweep 1e-9 .. pi" || label == "pair distance sweep 1e-9 .. pi") f = {"AngleSweep"};
+  else if (label == "near a full turn: 2 pi - 1e-9 .. 1e-1") f = {"NearFullTurn"};
+  else if (label == "exact antipode (rounded dot below -1 where possible)") f = {"Antipodal"};
+  else if (starts_with(label, "near-antipodal ")) f = {"NearAntipodal"};
+  else if (starts_with(label, "near-identical pair")) f = {"NearIdentical"};
+  else if (label == "influences of unequal scales 2^-4 .. 2^5") f = {"NonUnit", "UnequalScales"};
+  else if (label == "influences of unequal extreme scales") f = {"NonUnit", "HugeScale", "TinyScale", "UnequalScales"};
+  else if (starts_with(label, "non-unit axis, scale 2^")) {
+    const int e = std::stoi(label.substr(std::string("non-unit axis, scale 2^").size()));
+    f = {"NonUnit"};
+    if (e > 10) f.push_back("HugeScale");
+    if (e < -10) f.push_back("TinyScale");
+  }
   else if (label == "dot exactly 0") f = {"HemisphereTie"};
   else if (label == "exact antipode") f = {"Antipodal"};
   else if (label == "negated quaternions") f = {"Negated"};

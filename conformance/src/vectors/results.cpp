@@ -49,6 +49,16 @@ ResultsFile parse_results(const json& j, const std::filesystem::path& file) {
   r.description = string_at(impl, "description", "/implementation", false);
   if (impl.contains("claimed_clauses")) r.claimed_clauses = strings_at(impl, "claimed_clauses", "/implementation");
   if (impl.contains("claimed_levels")) r.claimed_levels = strings_at(impl, "claimed_levels", "/implementation");
+  // DECL-1: documented preconditions and chosen conventions, "op:id".
+  for (const char* key : {"preconditions", "conventions"}) {
+    if (!impl.contains(key)) continue;
+    std::vector<std::string>& into = std::string(key) == "preconditions" ? r.preconditions : r.conventions;
+    into = strings_at(impl, key, "/implementation");
+    for (std::size_t i = 0; i < into.size(); ++i)
+      if (into[i].find(':') == std::string::npos)
+        throw VectorsError(file, std::string("/implementation/") + key + "/" + std::to_string(i),
+                           "a declaration is \"op:id\" (DECL-1), got \"" + into[i] + "\"");
+  }
   r.vectors = string_at(j, "vectors", "", true);
   if (j.contains("unsupported_ops")) r.unsupported_ops = strings_at(j, "unsupported_ops", "");
   if (!j.contains("results")) fail("", "missing field \"results\"");

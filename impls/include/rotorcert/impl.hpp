@@ -37,6 +37,19 @@ namespace rotorcert::impl {
 
 enum class Status : std::uint8_t { ok = RC_OK, domain_error = RC_DOMAIN_ERROR };
 
+/// EDGE-9: a weight set is usable when it is not empty, every weight is finite and >= 0 (-0
+/// counts as 0) and some weight is > 0. For glue that writes a blend around a library that has
+/// none: the blend rules are the glue's, the arithmetic the library's.
+template <class S>
+bool usable_weights(std::span<const S> w) {
+  bool positive = false;
+  for (const S& x : w) {
+    if (!(x >= S(0)) || x == std::numeric_limits<S>::infinity()) return false;  // NaN, negative, +Inf
+    positive = positive || x > S(0);
+  }
+  return positive;
+}
+
 template <class S> using Quat = std::array<S, 4>;      // [x, y, z, w]
 template <class S> using Vec3 = std::array<S, 3>;      // [x, y, z]; bivectors [e23, e31, e12]
 template <class S> using Mat3 = std::array<S, 9>;      // column-major

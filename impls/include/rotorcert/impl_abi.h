@@ -1,4 +1,4 @@
-/* rotorcert implementation ABI, version 1.
+/* rotorcert implementation ABI, version 2 (version 1 tables still load: see below).
  *
  * An implementation under test (built in, or a third-party plugin loaded with dlopen) exports
  * one C entry point:
@@ -8,6 +8,12 @@
  * It returns its index-th table (one table per scalar type it offers, say a float and a double
  * table) or NULL past the last one, and NULL when it does not speak abi_version. Tables and
  * everything they point to live as long as the library is loaded.
+ *
+ * Versions: a version-2 table is a version-1 table with two fields appended (preconditions and
+ * conventions, the declarations of spec clause DECL-1). The suite asks for version 2 first and,
+ * when a library answers NULL at index 0, for version 1; it reads the appended fields only from
+ * a table whose abi_version is 2. A library built against this header answers both (a version-1
+ * host reads the version-1 prefix of the same table).
  *
  * Every operation is a batch over plain arrays of the table's scalar type (float or double,
  * see rc_impl.scalar), n elements per call, with one status byte per element. A NULL function
@@ -45,7 +51,8 @@
 extern "C" {
 #endif
 
-#define RC_ABI_VERSION 1u
+#define RC_ABI_VERSION 2u
+#define RC_ABI_VERSION_MIN 1u /* the oldest version the suite still loads */
 
 /* Element status (RESULT-2). */
 enum { RC_OK = 0, RC_DOMAIN_ERROR = 1 };
@@ -123,6 +130,18 @@ typedef struct rc_impl {
   const char* const* simd_targets;
   int (*select_target)(const char* name);
   const char* (*current_target)(void);
+  /* ---- ABI version 2 ---- */
+  /* Declarations (DECL-1), each a NULL-terminated list of "op:id" strings, or NULL for none.
+   * preconditions: documented preconditions of the library's calls, e.g. "from_axis_angle:unit_axis",
+   *   "slerp:t_in_unit_interval", "from_matrix:rotation_matrix". An input outside a declared
+   *   precondition is not held against the table at Core..Skinning; a Robust clause with such
+   *   inputs is NOT_SUPPORTED (the table does not claim to handle them).
+   * conventions: conventions the library chose where the spec allows several correct answers,
+   *   e.g. "from_matrix:sign", "to_axis_angle:angle_range_0_pi", "log:shorter_arc"; an output that
+   *   follows a declared convention passes, an undeclared one is reported as ACCEPTABLE.
+   * Ids: spec/SPEC.md section 4a (DECL-1, ACC-1). */
+  const char* const* preconditions;
+  const char* const* conventions;
 } rc_impl;
 
 /* The entry point every implementation library exports. */

@@ -5,7 +5,9 @@
 //   static constexpr const char* name, version, description;
 //   static constexpr std::uint32_t levels;          // RC_LEVEL_* bits
 //   static constexpr const char* const clauses[];   // NULL-terminated
-// and optionally the SIMD dispatch hooks simd_targets / select_target / current_target.
+// and optionally the SIMD dispatch hooks simd_targets / select_target / current_target, and the
+// declarations of ABI version 2 (DECL-1), each a NULL-terminated array of "op:id" strings:
+//   static constexpr const char* const preconditions[], conventions[];
 #pragma once
 
 #include <cstdint>
@@ -38,15 +40,18 @@ const rc_impl* table() {
       r.select_target = &Impl::select_target;
       r.current_target = &Impl::current_target;
     }
+    if constexpr (requires { Impl::preconditions; }) r.preconditions = Impl::preconditions;
+    if constexpr (requires { Impl::conventions; }) r.conventions = Impl::conventions;
     return r;
   }();
   return &t;
 }
 
-/// The body of an entry point: the index-th of the given implementation structs.
+/// The body of an entry point: the index-th of the given implementation structs. A version-2
+/// table is a version-1 table with fields appended, so it answers every version it contains.
 template <class... Impls>
 const rc_impl* entry(std::uint32_t abi_version, std::uint32_t index) {
-  if (abi_version != RC_ABI_VERSION) return nullptr;
+  if (abi_version < RC_ABI_VERSION_MIN || abi_version > RC_ABI_VERSION) return nullptr;
   const rc_impl* tables[] = {table<Impls>()...};
   return index < sizeof...(Impls) ? tables[index] : nullptr;
 }

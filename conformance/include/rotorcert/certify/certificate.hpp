@@ -33,6 +33,12 @@ struct TableInfo {
   std::vector<std::string> claimed_levels;
   std::vector<std::string> claimed_clauses;
   std::vector<std::string> supported_ops;
+  /// DECL-1: "op:id" declarations of the table (ABI version 2, or the adapter's manifest).
+  std::vector<std::string> declared_preconditions, declared_conventions;
+  engine::Declarations declarations() const {
+    return {{declared_preconditions.begin(), declared_preconditions.end()},
+            {declared_conventions.begin(), declared_conventions.end()}};
+  }
 
   ref::Format format() const { return scalar == "float" ? ref::Format::binary32 : ref::Format::binary64; }
 };
@@ -72,6 +78,10 @@ json levels_json(const Certificate& c, const std::vector<std::string>& levels);
 
 /// One certificate in the report.json format (see spec/report.schema.json).
 json certificate_json(const spec::Spec& spec, const Certificate& c, const std::vector<std::string>& levels);
+
+/// Whether a claimed clause's result is as good as a table can claim: PASS, QUALITY_WARNING, or
+/// NOT_SUPPORTED only because its inputs lie outside the table's declared preconditions (DECL-1).
+bool claimed_clause_good(const json& clause_result);
 
 /// Whether a certificate holds no surprise: every expected failure FAILs, every other claimed
 /// clause is PASS or QUALITY_WARNING.

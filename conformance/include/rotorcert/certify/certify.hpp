@@ -15,6 +15,11 @@
 
 namespace rotorcert::certify {
 
+/// The defaults of --cases (LEVEL-1: at least 512 per family) and --search (implementation calls
+/// per check for the worst-case search); reproduce commands leave defaults out.
+inline constexpr int kDefaultCasesPerFamily = 512;
+inline constexpr int kDefaultSearchBudget = 64;
+
 /// A table to certify: built in (linked into the tool), or the index-th table of a plugin, which
 /// only ever gets loaded inside child processes.
 struct Target {

@@ -38,7 +38,16 @@ struct CaseOptions {
   std::uint64_t seed = 1;
   int cases_per_family = 32;
   bool worked_examples = true;
+  /// Worst-case search (run_clause): implementation calls spent per check on walking the
+  /// neighbourhood of the worst inputs found (ulp steps). 0: none. Deterministic in the seed.
+  int search_budget = 0;
 };
+
+/// Where an input belongs by its magnitudes (LEVEL-1): "" for the ordinary inputs of Core ..
+/// Skinning, else the Robust clause that judges it: "EDGE-5" (a quaternion or vector far from
+/// unit scale), "EDGE-6" (a zero quaternion, dual real part or axis), "EDGE-7" (NaN or Inf),
+/// "EDGE-8" (subnormal components), "EDGE-9" (degenerate weights).
+std::string robust_clause_of(const AbiOp& op, const Case& c, ref::Format f);
 
 /// The checks that judge `clause` for an implementation of `format` that supports the ABI ops
 /// for which `supported(op)` is true. Empty when the clause has no implementation-visible check

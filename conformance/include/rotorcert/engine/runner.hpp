@@ -19,6 +19,7 @@
 
 #include <rotorcert/engine/cases.hpp>
 #include <rotorcert/engine/convention.hpp>
+#include <rotorcert/engine/declarations.hpp>
 #include <rotorcert/impl_abi.h>
 #include <rotorcert/reference/tolerance.hpp>
 #include <rotorcert/spec/spec.hpp>
@@ -39,11 +40,22 @@ struct Observed {
   Values outputs;               // one vector per output array of the op, as exact values
 };
 
+/// How a case was graded (ACC-1, DECL-1): by the spec's answer, under an acceptable convention,
+/// or not at all because it lies outside a precondition the table declares.
+enum class Grade { valid, acceptable, excluded };
+
 /// The judgement of one case.
 struct CaseVerdict {
+  CaseVerdict() = default;
+  CaseVerdict(ref::Verdict v, double e, std::string d) : verdict(v), error(e), detail(std::move(d)) {}
   ref::Verdict verdict = ref::Verdict::pass;
   double error = 0;  // in eps units for eps classes; NaN for a wrong status or a NaN output
   std::string detail;  // expected versus got, in decimal
+  Grade grade = Grade::valid;
+  bool status_mismatch = false;  // the verdict is about the status (RESULT-2), not a number
+  std::string convention;        // acceptable: the convention (ACC-1) under which the output passes
+  bool declared = false;         // acceptable: the table declares that convention
+  std::string precondition;      // excluded: the declared precondition (DECL-1) the input violates
 };
 
 /// The worst case of one op within a clause (finite errors only): for the accuracy tables.
@@ -72,6 +84,35 @@ struct ClauseResult {
   /// Conventions (convention.hpp) under which a failing clause passes: a consistent but different
   /// convention rather than a numerical defect. Filled by detect_conventions().
   std::vector<std::string> conventions;
+
+  /// CONV-1 per input: a convention that explains some of the failing inputs (at least half),
+  /// with the failing inputs it does not explain.
+  struct Diagnosis {
+    std::string convention;
+    std::size_t explained = 0, failing = 0;
+    std::vector<std::string> unexplained;  // inputs (hexfloat), at most 3
+  };
+  std::vector<Diagnosis> diagnoses;
+
+  /// Inputs whose status was wrong (RESULT-2), listed apart from the numeric headline: their
+  /// count and the first of them.
+  std::size_t status_failures = 0;
+  std::string status_op, status_label, status_input, status_detail;
+
+  /// ACC-1: outputs that pass only under an acceptable convention, per convention id.
+  struct Acceptable {
+    std::string convention;
+    bool declared = false;
+    std::size_t count = 0;
+    std::string op, label, input, detail;  // the first such input
+  };
+  std::vector<Acceptable> acceptable;
+
+  /// DECL-1: inputs not judged because they violate a declared precondition, per precondition.
+  std::map<std::string, std::size_t> excluded;
+
+  /// Evaluations spent by the worst-case search (CaseOptions::search_budget).
+  std::size_t searched = 0;
 };
 
 /// The ref::Format of a table.
@@ -91,24 +132,40 @@ void set_call_environment(const std::fenv_t& env);
 std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases,
                               std::size_t k);
 
+/// The error of an implementation's outputs against reference outputs, in the unit of the op's
+/// measures (radians, relative; the largest over the output arrays; NaN if any is NaN).
+Real output_error(const AbiOp& op, const Values& got, const Values& want, const Case& c, ref::Format f);
+
 /// Strict and loose bars of class `tc` for one case, in the unit errors are compared in.
 ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& c, const Real& eps);
 
 /// Judges one case: the reference on c.inputs (mapped by `convention` if given) against `got`.
+/// With `declared`: an input outside a declared precondition is Grade::excluded (not judged);
+/// without a convention, a numeric FAIL that passes under an acceptable convention (ACC-1) is
+/// Grade::acceptable.
 CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got,
-                       ref::Format f, const Convention* convention = nullptr);
+                       ref::Format f, const Convention* convention = nullptr, const Declarations* declared = nullptr);
 
 /// EXP-2: judges exp(log q) = q, given what log returned (`log_got`) and what exp returned when
 /// fed that (`exp_got`). c is the log case.
 CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, const Observed& log_got,
                              const Observed& exp_got, ref::Format f);
 
-/// Accumulates case verdicts into a ClauseResult: counts, the worst case, the error lists.
+/// Accumulates case verdicts into a ClauseResult: counts, the headline (the largest numeric error
+/// among validly graded inputs), the status failures, the acceptable and excluded inputs, and
+/// the error lists.
 struct ClauseJudge {
+  explicit ClauseJudge(ClauseResult& r) : result(r) {}
   ClauseResult& result;
   ref::Verdict worst_verdict = ref::Verdict::pass;
+  ref::Verdict numeric_verdict = ref::Verdict::pass;
+  struct Numeric : WorstCase {
+    std::string op;
+  } numeric;  // the numeric headline so far (finish() moves it into result)
   void record(const CaseVerdict& v, const AbiOp& op, const Case& c, ref::Format f);
-  /// Sets result.outcome from the worst verdict (PASS, QUALITY_WARNING or FAIL).
+  /// Sets result.outcome from the worst verdict (PASS, QUALITY_WARNING or FAIL); a Robust clause
+  /// with inputs outside a declared precondition and no FAIL is NOT_SUPPORTED, and so is a clause
+  /// none of whose inputs were judged (DECL-1).
   void finish();
 };
 
@@ -132,6 +189,11 @@ ClauseResult run_clause(const rc_impl& table, const spec::Spec& spec, const std:
 /// QUALITY_WARNING). Runs the implementation again on the same cases.
 std::vector<std::string> detect_conventions(const rc_impl& table, const spec::Spec& spec,
                                             const std::string& clause, const CaseOptions& options);
+/// The same, per input (CONV-1): fills result.conventions (conventions that explain every failing
+/// input and contradict none) and result.diagnoses (conventions that explain at least half of the
+/// failing inputs, with the inputs they do not explain).
+void detect_conventions(const rc_impl& table, const spec::Spec& spec, const std::string& clause,
+                        const CaseOptions& options, ClauseResult& result);
 
 /// The clause IDs a table claims.
 std::vector<std::string> claimed_clauses(const rc_impl& table);

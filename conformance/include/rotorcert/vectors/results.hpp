@@ -31,6 +31,7 @@ struct ResultsFile {
   std::optional<std::vector<std::string>> claimed_clauses, claimed_levels;
   std::string vectors;                     // as written: the export's directory or index.json, relative to `file`
   std::vector<std::string> unsupported_ops;  // ABI ops declared NOT_SUPPORTED (RESULT-1)
+  std::vector<std::string> preconditions, conventions;  // DECL-1 declarations, "op:id"
   std::vector<ResultEntry> results;
 
   ref::Format format() const { return scalar == "float" ? ref::Format::binary32 : ref::Format::binary64; }

@@ -34,7 +34,8 @@ struct Vector {
   std::vector<std::string> flags;   // flags_for_label(label)
   ref::Status status = ref::Status::ok;  // the status the spec requires
   engine::Values expected;          // the reference outputs (exact at 256 bits when built, as read when parsed)
-  std::string result;               // "valid", "invalid" (DOMAIN_ERROR required) or "acceptable" (informative)
+  std::string result;               // "valid", "invalid" (DOMAIN_ERROR required) or "acceptable" (ACC-1)
+  std::vector<std::string> acceptable;  // ACC-1 conventions that may give another correct output
 };
 
 /// One file: the vectors of one (clause, op, format).

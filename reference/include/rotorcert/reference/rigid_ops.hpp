@@ -9,7 +9,8 @@
 //
 // Every clause function validates first (EDGE-6, EDGE-7, EDGE-9): a non-finite component
 // anywhere, a zero real part, or bad weights give DOMAIN_ERROR with all-NaN output. A
-// non-unit dual quaternion stands for its DQ-4 normalisation (EDGE-5).
+// non-unit dual quaternion stands for its DQ-4 normalisation (EDGE-5), except in DQ-2 and
+// MOTOR-3, whose product is defined on the inputs as given ("No normalisation").
 #pragma once
 
 #include <algorithm>
@@ -154,17 +155,23 @@ DualQuaternion<T> screw_power(const DualQuaternion<T>& u, const T& tau) {
           {-h * sn, sn * m[0] + h * c * l[0], sn * m[1] + h * c * l[1], sn * m[2] + h * c * l[2]}};
 }
 
-/// DQ-6 on validated input: DQ-4 of every influence, s_i = -1 iff dot(r_i, r_p) < 0 against the
-/// pivot p (first weight > 0), sum w_i s_i sigma_i, DQ-4 of the sum.
+/// DQ-6 on validated input: DQ-4 of every influence (EDGE-5: a non-unit sigma_i is the rigid
+/// motion of DQ-4(sigma_i), its weight is w_i whatever its norm), s_i = -1 iff r_i . r_p < 0
+/// against the pivot p (first weight > 0), sum w_i s_i DQ-4(sigma_i), DQ-4 of the sum.
+/// The sign of r_i . r_p is that of the real parts as given (a positive scale keeps it) and is
+/// decided exactly on them (EDGE-3); `reals`, if not empty, holds positive multiples of the
+/// real parts to decide it on instead (SKIN-2: the q_i as given, not their rounded q_i/|q_i|).
 template <class T>
-DualQuaternion<T> dlb(std::span<const DualQuaternion<T>> d, std::span<const T> w_in) {
+DualQuaternion<T> dlb(std::span<const DualQuaternion<T>> d, std::span<const T> w_in,
+                      std::span<const Quaternion<T>> reals = {}) {
   const std::vector<T> w = scaled_weights(w_in);
   std::size_t p = 0;
   while (!(w[p] > 0)) ++p;
+  auto real = [&](std::size_t i) -> const Quaternion<T>& { return reals.empty() ? d[i].real : reals[i]; };
   DualQuaternion<T> sum{{T(0), T(0), T(0), T(0)}, {T(0), T(0), T(0), T(0)}};
   for (std::size_t i = 0; i < d.size(); ++i) {
     DualQuaternion<T> u = normalized(d[i]);
-    if (hemisphere_sign(d[i].real, d[p].real) < 0) u = negated(u);  // exact decision (EDGE-3)
+    if (hemisphere_sign(real(i), real(p)) < 0) u = negated(u);  // exact decision (EDGE-3)
     sum = {sum.real + w[i] * u.real, sum.dual + w[i] * u.dual};
   }
   return normalized(sum);
@@ -214,11 +221,13 @@ Result<Vec3<T>> DQ_1_translation(const DualQuaternion<T>& d) {
   return {rigid::translation_of_unit(rigid::normalized(d)), Status::ok};
 }
 
-/// DQ-2: a b of the normalised inputs: apply b first.
+/// DQ-2: the product a b of the inputs as given (apply b first). No normalisation: for non-unit
+/// inputs the result is the exact product, whose DQ-4 normalisation is DQ-4(a) DQ-4(b) (the dual
+/// norm is multiplicative), so METRIC-7, which normalises both sides, judges the rigid motion.
 template <class T>
 Result<DualQuaternion<T>> DQ_2_compose(const DualQuaternion<T>& a, const DualQuaternion<T>& b) {
   if (!rigid::valid(a) || !rigid::valid(b)) return domain_error<DualQuaternion<T>>();
-  return {rigid::product(rigid::normalized(a), rigid::normalized(b)), Status::ok};
+  return {rigid::product(a, b), Status::ok};
 }
 
 /// DQ-3: p' = R p + t of the normalised input (R p as q_r p q_r*).
@@ -278,11 +287,14 @@ Result<Vec3<T>> MOTOR_2_apply_point(const DualQuaternion<T>& d, const Vec3<T>& p
   return {pga::point_coordinates(gp(gp(m, pga::point(p)), reverse(m))), Status::ok};
 }
 
-/// MOTOR-3: the geometric product M_a M_b (apply b first), mapped back by MOTOR-1.
+/// MOTOR-3: the geometric product M_a M_b (apply b first) of the MOTOR-1 images of the inputs as
+/// given, mapped back by MOTOR-1: the motor form of DQ-2's product, not normalised either.
 template <class T>
 Result<DualQuaternion<T>> MOTOR_3_compose(const DualQuaternion<T>& a, const DualQuaternion<T>& b) {
   if (!rigid::valid(a) || !rigid::valid(b)) return domain_error<DualQuaternion<T>>();
-  return {rigid::to_dual_quaternion(gp(rigid::unit_motor(a), rigid::unit_motor(b))), Status::ok};
+  return {rigid::to_dual_quaternion(gp(pga::motor_from_dual_quaternion(a.real, a.dual),
+                                       pga::motor_from_dual_quaternion(b.real, b.dual))),
+          Status::ok};
 }
 
 /// MOTOR-4: exp(t log(M_B ~M_A)) M_A with M_B -> -M_B iff <M_B ~M_A>_0 < 0 (the same test as
@@ -297,8 +309,9 @@ Result<DualQuaternion<T>> MOTOR_4_interpolate(const DualQuaternion<T>& a, const 
   return {rigid::to_dual_quaternion(gp(MOTOR_4_exp(t * MOTOR_4_log(relative)), ma)), Status::ok};
 }
 
-/// MOTOR-5: normalise(sum w_i s_i M_i) with every M_i normalised in the algebra, the pivot the
-/// first positive weight and s_i = -1 iff <M_i ~M_p>_0 < 0.
+/// MOTOR-5: normalise(sum w_i s_i M_i) with every M_i normalised in the algebra (M (M ~M)^(-1/2),
+/// DQ-4 transported by MOTOR-1, as DQ-6 normalises every influence), the pivot the first positive
+/// weight and s_i = -1 iff <M_i ~M_p>_0 < 0.
 template <class T>
 Result<DualQuaternion<T>> MOTOR_5_blend(std::span<const DualQuaternion<T>> d, std::span<const T> w_in) {
   if (!rigid::valid_weights(w_in, d.size())) return domain_error<DualQuaternion<T>>();
@@ -361,14 +374,16 @@ Result<Vec3<T>> SKIN_1_linear_blend(std::span<const Quaternion<T>> q, std::span<
   return {sum, Status::ok};
 }
 
-/// SKIN-2: dual-quaternion skinning, DQ-3 of the DLB (DQ-6) of sigma_i = DQ-1(q_i, t_i).
+/// SKIN-2: dual-quaternion skinning, DQ-3 of the DLB (DQ-6) of sigma_i = DQ-1(q_i, t_i). The real
+/// part of sigma_i is q_i/|q_i|, so DQ-6's sign s_i is that of q_i . q_p, decided exactly on the
+/// q_i as given (EDGE-3).
 template <class T>
 Result<Vec3<T>> SKIN_2_dual_quaternion(std::span<const Quaternion<T>> q, std::span<const Vec3<T>> t,
                                        std::span<const T> w, const Vec3<T>& v) {
   if (!rigid::valid_skin_input(q, t, w, v)) return domain_error<Vec3<T>>();
   std::vector<DualQuaternion<T>> d;
   for (std::size_t i = 0; i < q.size(); ++i) d.push_back(rigid::from_rotation_translation(q[i], t[i]));
-  return {rigid::apply_unit(rigid::dlb<T>(d, w), v), Status::ok};
+  return {rigid::apply_unit(rigid::dlb<T>(d, w, q), v), Status::ok};
 }
 
 }  // namespace rotorcert::ref::clause

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""rotorcert reproducer: clifford (pygae) clifford.tools.g3c.rotor_parameterisation.interpolate_rotors, clause SLERP-1.
+
+SLERP-1 (spec/SPEC.md 8.2): slerp(a, b, t) = a (a^-1 b')^t, tolerance eps16 (loose bar 256 eps). For
+two rotations a half turn apart (a.b = 0, so <R_b ~R_a>0 = 0) general_logarithm(R_b ~R_a) computes
+F = 2 (<R>4 - <R>0) <R>2 = 0 and returns the zero bivector, so interpolate_rotors returns R_a for
+every t: the rotation never moves. At a.b = 0 either hemisphere is accepted; the result is neither.
+(Elsewhere the Taylor exp costs up to ~5e4 eps, see SLERP-2.)
+interpolate_rotors(R_next, R_n, t) ("Interpolates all conformal type rotors") is clifford's only rotor
+interpolation: exp(t general_logarithm(R_next ~R_n)) R_n, with the Taylor-series exp of EXP-1.
+Upstream: no matching issue found in pygae/clifford.
+Exit 0: defect shown; 1: not shown (fixed); 77: clifford cannot be imported.
+"""
+import sys
+import warnings
+
+CLAUSE = "SLERP-1"
+try:
+    import clifford
+    from clifford.tools.g3 import quaternion_to_rotor, rotor_to_quaternion
+    from clifford.tools.g3c.rotor_parameterisation import interpolate_rotors
+except Exception as exc:  # noqa: BLE001 - any import failure is a skip
+    print("rotorcert reproducer: clifford ? %s: SKIP: cannot import clifford: %s" % (CLAUSE, exc))
+    sys.exit(77)
+warnings.simplefilter("ignore")  # the DeprecationWarning of general_exp inside interpolate_rotors
+
+# ---- independent reference: 60-digit decimal arithmetic (standard library only) -------------------
+from decimal import Decimal as D, getcontext  # noqa: E402
+getcontext().prec = 60
+TINY = D(10) ** -70
+def sincos(x):  # sin, cos of a Decimal by the Taylor series of e^(ix) (|x| < 10 here)
+    s = c = D(0); t, n = D(1), 0
+    while n < 2 or abs(t) > TINY:
+        k = n % 4
+        if k == 0: c += t
+        elif k == 1: s += t
+        elif k == 2: c -= t
+        else: s -= t
+        n += 1; t = t * x / n
+    return s, c
+def atan(x):  # halve the angle until |x| < 1/8, then the alternating series
+    k = 0
+    while abs(x) > D(1) / 8: x, k = x / (1 + (1 + x * x).sqrt()), k + 1
+    s, p, n = D(0), x, 0
+    while abs(p) > TINY: s, p, n = s + p / (2 * n + 1), -p * x * x, n + 1
+    return s * 2 ** k
+def atan2(y, x):
+    r = (x * x + y * y).sqrt()
+    if r == 0: return D(0)
+    if x > 0: return 2 * atan(y / (r + x))
+    return 4 * atan(D(1)) if y == 0 else 2 * atan((r - x) / y)
+def norm(v): return sum(D(c) * D(c) for c in v).sqrt()
+def dist(a, b):  # METRIC-1: 4 atan2(min(|a-b|,|a+b|), max(..)) of the normalised quaternions
+    na, nb = norm(a), norm(b); a, b = [D(c) / na for c in a], [D(c) / nb for c in b]
+    m, p = norm([x - y for x, y in zip(a, b)]), norm([x + y for x, y in zip(a, b)])
+    return 4 * atan2(min(m, p), max(m, p))
+
+def slerp_ref(a, b, t):  # SLERP-1 at 60 digits: normalise, b' = -b iff a.b < 0, then the sine formula
+    na, nb = norm(a), norm(b); a, b = [D(c) / na for c in a], [D(c) / nb for c in b]
+    d = sum(x * y for x, y in zip(a, b))
+    if d < 0: b, d = [-c for c in b], -d
+    s = norm([y - d * x for x, y in zip(a, b)])  # sin(Omega) = |b' - (a.b') a|
+    if s == 0: return a
+    om = atan2(s, d)
+    return [(sincos((1 - D(t)) * om)[0] * x + sincos(D(t) * om)[0] * y) / s for x, y in zip(a, b)]
+
+
+# ---- conventions --------------------------------------------------------------------------------
+# clifford.tools.g3 works in the conformal layout clifford.g3c with quaternions ordered [w, x, y, z];
+# its quaternion_to_rotor([w, x, y, z]) = w - e123 (x e1 + y e2 + z e3) = w - x e23 - y e31 - z e12,
+# which is exactly rotorcert's Q2R-1, and rotor_to_quaternion is its inverse. rotorcert's slerp(a, b, t)
+# (a at t = 0) is interpolate_rotors(R_b, R_a, t): its second argument is the t = 0 end.
+def clifford_slerp(a, b, t):  # a, b as (x, y, z, w)
+    Ra = quaternion_to_rotor([a[3], a[0], a[1], a[2]])
+    Rb = quaternion_to_rotor([b[3], b[0], b[1], b[2]])
+    w, x, y, z = rotor_to_quaternion(interpolate_rotors(Rb, Ra, t))
+    return [float(x), float(y), float(z), float(w)]
+
+
+EPS = 2.0 ** -52
+h = float.fromhex
+LOOSE = 256  # eps16 loose bar (spec/clauses.json)
+a = [0.0, 0.0, 0.0, 1.0]  # (x, y, z, w): the identity
+b = [1.0, 0.0, 0.0, 0.0]  # a half turn about x
+t = 0.25
+
+print("rotorcert reproducer: clifford %s %s: interpolate_rotors between rotations a half turn apart "
+      "never moves (returns the t = 0 end for t = 1/4)" % (clifford.__version__, CLAUSE))
+got = clifford_slerp(a, b, t)
+# a.b = 0 exactly: either branch (b' = b or b' = -b) is accepted, so take the nearer of the two
+refs = [slerp_ref(a, b, t), slerp_ref(a, [-c for c in b], t)]
+errs = [max(dist(got, r), abs(norm(got) - 1)) for r in refs]  # METRIC-1 and METRIC-6
+err = min(errs)
+bad = not (err <= LOOSE * D(EPS))
+print("  call:    interpolate_rotors(Rb, Ra, t), Ra/Rb = clifford.tools.g3.quaternion_to_rotor([w, x, y, z])")
+print("  input:   a = [%s], b = [%s] (x, y, z, w), t = %s" % (", ".join(c.hex() for c in a), ", ".join(c.hex() for c in b), t.hex()))
+print("  library: [%s]  (= a)" % ", ".join(c.hex() for c in got))
+for r, e, note in zip(refs, errs, ("b' = b: (sin(pi/8), 0, 0, cos(pi/8))", "b' = -b, equally accepted at a.b = 0")):
+    print("  correct: [%s]  (%s, 60 digits); error %.3e rad = %.4g eps"
+          % (", ".join(float(c).hex() for c in r), note, e, e / D(EPS)))
+print("  error:   %.3e rad = %.4g eps (METRIC-1/METRIC-6, nearer branch; bar %d eps)%s"
+      % (err, err / D(EPS), LOOSE, "  <-- DEFECT" if bad else ""))
+print("DEFECT SHOWN" if bad else "DEFECT NOT SHOWN")
+sys.exit(0 if bad else 1)
+

@@ -1,0 +1,82 @@
+// What a correct library may choose, and what it may require (spec section 4a):
+//
+//   - preconditions (DECL-1): documented requirements on the input of a call ("the axis must be
+//     normalized", "t in [0, 1]", "a pure rotation matrix"). A table declares the ones its
+//     library documents; an input outside a declared precondition is not held against it at
+//     Core..Skinning, and makes a Robust clause NOT_SUPPORTED unless something else FAILs.
+//   - acceptable conventions (ACC-1): outputs that differ from the spec's answer yet describe the
+//     same rotation in a way a correct library may choose (the sign of from_matrix's q, the angle
+//     range of to_axis_angle, the axis of the identity, the branch of log at w < 0, either side of
+//     a hemisphere tie). Such an output is graded ACCEPTABLE (the certificate names the
+//     convention); declared by the table, it simply passes.
+//
+// Both are data: an id, a description, the ops it concerns, and a predicate on one case. The
+// judge (runner.hpp) consults them per input; nothing here calls an implementation.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <rotorcert/engine/abi_op.hpp>
+#include <rotorcert/engine/cases.hpp>
+#include <rotorcert/impl_abi.h>
+#include <rotorcert/reference/metrics.hpp>
+
+namespace rotorcert::engine {
+
+/// The declarations of one table (ABI version 2 fields, or an adapter manifest): "op:id" strings.
+struct Declarations {
+  std::set<std::string> preconditions;
+  std::set<std::string> conventions;
+  bool has_precondition(const std::string& op, const std::string& id) const {
+    return preconditions.count(op + ":" + id) > 0 || preconditions.count("*:" + id) > 0;
+  }
+  bool has_convention(const std::string& op, const std::string& id) const {
+    return conventions.count(op + ":" + id) > 0 || conventions.count("*:" + id) > 0;
+  }
+  bool empty() const { return preconditions.empty() && conventions.empty(); }
+};
+
+/// A table's declarations (empty for an ABI version 1 table).
+Declarations declarations_of(const rc_impl& table);
+
+/// DECL-1: one kind of documented precondition.
+struct Precondition {
+  std::string id;           // stable: "unit_axis", "t_in_unit_interval", ...
+  std::string description;  // one line
+  std::function<bool(const AbiOp& op)> applies;
+  /// Whether the case satisfies it (exact inputs; `f` gives eps for the near-unit bands).
+  std::function<bool(const AbiOp& op, const Case& c, ref::Format f)> holds;
+};
+const std::vector<Precondition>& preconditions();
+const Precondition* find_precondition(const std::string& id);
+
+/// The first precondition declared for this op that the case violates, or nullptr.
+const Precondition* violated_precondition(const Declarations& d, const AbiOp& op, const Case& c, ref::Format f);
+
+/// ACC-1: one acceptable convention. `error` measures the implementation's output against the
+/// answer under the convention, in the unit of the op's own measure (radians, relative), or
+/// returns nullopt when the convention has nothing to say about this case.
+struct AcceptableConvention {
+  std::string id;
+  std::string description;
+  /// Accepted only where the table declares it: a choice that is a defect when unintended
+  /// (an interpolation that takes the long arc), correct when documented.
+  bool declared_only = false;
+  std::function<bool(const AbiOp& op)> applies;
+  /// Whether the convention can make a difference on this input (the reference is computed).
+  std::function<bool(const AbiOp& op, const Case& c, const Values& want, ref::Format f)> relevant;
+  std::function<std::optional<Real>(const AbiOp& op, const Case& c, const Values& got, const Values& want,
+                                    ref::Format f)>
+      error;
+};
+const std::vector<AcceptableConvention>& acceptable_conventions();
+
+/// The ids of the acceptable conventions that can apply to this case at all (for the vectors'
+/// `result` field: a case with any is "acceptable", else "valid").
+std::vector<std::string> acceptable_for_case(const AbiOp& op, const Case& c, ref::Format f);
+
+}  // namespace rotorcert::engine

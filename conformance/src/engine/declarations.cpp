@@ -1,0 +1,354 @@
+#include <rotorcert/engine/declarations.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <rotorcert/engine/runner.hpp>
+#include <rotorcert/reference/rotation_ops.hpp>
+
+namespace rotorcert::engine {
+namespace {
+
+using Quat = ref::Quaternion<Real>;
+using V3 = ref::Vec3<Real>;
+namespace clause = ref::clause;
+
+Quat quat(const std::vector<Real>& a, std::size_t i = 0) { return {a[i * 4 + 3], a[i * 4], a[i * 4 + 1], a[i * 4 + 2]}; }
+
+Real norm(const std::vector<Real>& v, std::size_t from, std::size_t n) {
+  Real s(0);
+  for (std::size_t i = from; i < from + n; ++i) s += v[i] * v[i];
+  return sqrt(s);
+}
+
+/// The near-unit band of the preconditions: 64 eps, wide enough for inputs that went through
+/// a few roundings (a normalised quaternion is within 2 eps of unit), narrow enough that a
+/// deliberately non-unit input (EDGE-5) is outside it.
+Real unit_band(ref::Format f) { return Real(64) * ref::format_epsilon<Real>(f); }
+
+bool all_finite(const Case& c) {
+  for (const auto& a : c.inputs)
+    for (const Real& x : a)
+      if (!mpfr::isfinite(x)) return false;
+  return true;
+}
+
+std::size_t input_index(const AbiOp& op, const std::string& name) {
+  for (std::size_t i = 0; i < op.inputs.size(); ++i)
+    if (op.inputs[i].name == name) return i;
+  return op.inputs.size();
+}
+
+bool has_stride(const AbiOp& op, int stride) {
+  return std::any_of(op.inputs.begin(), op.inputs.end(), [&](const Array& a) { return a.stride == stride; });
+}
+
+bool is_interpolation(const AbiOp& op) { return op.name == "slerp" || op.name == "nlerp" || op.name == "dq_sclerp"; }
+
+/// The quaternion a/|a| (exact, at the reference precision).
+Quat unit(const Quat& q) { return ref::normalized(q); }
+
+/// The rotation distance and norm defect of a quaternion output against `want` (METRIC-1, 6).
+Real unit_rotation_error(const std::vector<Real>& got, const Quat& want) {
+  return std::max(clause::METRIC_1_rotation_distance(quat(got), want), clause::METRIC_6_norm_defect(quat(got)));
+}
+
+/// The exact normalised dot product of two quaternion blocks: |a.b| / (|a||b|).
+Real normalised_dot(const std::vector<Real>& a, std::size_t ia, const std::vector<Real>& b, std::size_t ib) {
+  const Quat qa = quat(a, ia), qb = quat(b, ib);
+  const Real na = norm(a, ia * 4, 4), nb = norm(b, ib * 4, 4);
+  if (na == 0 || nb == 0) return Real(1);
+  return ref::dot(qa, qb) / (na * nb);
+}
+
+/// The tie band of ACC-1 (hemisphere_tie): |a.b| within 8 eps of 0, where the rounding of a
+/// dot product in the format (4 products, 3 sums) can give either sign.
+bool near_tie(const Real& d, ref::Format f) { return abs(d) <= Real(8) * ref::format_epsilon<Real>(f); }
+
+/// For n-way inputs: the index of the pivot (first positive weight), or -1.
+long pivot_of(const std::vector<Real>& w) {
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if (w[i] > 0) return long(i);
+  return -1;
+}
+
+/// The influences (of the quaternion array `qa`, block stride `s` in scalars: 4 or 8) whose
+/// real part ties with the pivot's.
+std::vector<std::size_t> tied_influences(const Case& c, std::size_t qa, std::size_t wa, int s, ref::Format f) {
+  std::vector<std::size_t> tied;
+  const long p = pivot_of(c.inputs[wa]);
+  if (p < 0) return tied;
+  const auto& v = c.inputs[qa];
+  std::vector<Real> reals;  // the real parts as quaternion blocks
+  for (std::size_t i = 0; i * s < v.size(); ++i)
+    for (int j = 0; j < 4; ++j) reals.push_back(v[i * s + j]);
+  for (std::size_t i = 0; i < c.k; ++i)
+    if (long(i) != p && near_tie(normalised_dot(reals, i, reals, std::size_t(p)), f)) tied.push_back(i);
+  return tied;
+}
+
+std::vector<Precondition> build_preconditions() {
+  std::vector<Precondition> all;
+  all.push_back({"finite", "every input component is finite (no NaN, no infinity)",
+                 [](const AbiOp&) { return true; },
+                 [](const AbiOp&, const Case& c, ref::Format) { return all_finite(c); }});
+  all.push_back({"unit_quaternion", "every quaternion input is unit (within 64 eps)",
+                 [](const AbiOp& op) { return has_stride(op, 4); },
+                 [](const AbiOp& op, const Case& c, ref::Format f) {
+                   if (!all_finite(c)) return false;
+                   for (std::size_t a = 0; a < op.inputs.size(); ++a)
+                     if (op.inputs[a].stride == 4)
+                       for (std::size_t j = 0; j + 4 <= c.inputs[a].size(); j += 4)
+                         if (abs(norm(c.inputs[a], j, 4) - Real(1)) > unit_band(f)) return false;
+                   return true;
+                 }});
+  all.push_back({"unit_dual_quaternion", "every dual quaternion input is unit: |real| = 1 and real . dual = 0 (within 64 eps)",
+                 [](const AbiOp& op) { return has_stride(op, 8); },
+                 [](const AbiOp& op, const Case& c, ref::Format f) {
+                   if (!all_finite(c)) return false;
+                   for (std::size_t a = 0; a < op.inputs.size(); ++a)
+                     if (op.inputs[a].stride == 8)
+                       for (std::size_t j = 0; j + 8 <= c.inputs[a].size(); j += 8) {
+                         const auto& v = c.inputs[a];
+                         if (abs(norm(v, j, 4) - Real(1)) > unit_band(f)) return false;
+                         Real d(0);
+                         for (int i = 0; i < 4; ++i) d += v[j + i] * v[j + 4 + i];
+                         if (abs(d) > unit_band(f) * std::max(Real(1), norm(v, j + 4, 4))) return false;
+                       }
+                   return true;
+                 }});
+  all.push_back({"unit_axis", "the axis input is a unit vector (within 64 eps)",
+                 [](const AbiOp& op) { return op.name == "from_axis_angle" || op.name == "rotate_about_axis"; },
+                 [](const AbiOp& op, const Case& c, ref::Format f) {
+                   const std::size_t a = input_index(op, op.name == "from_axis_angle" ? "axis" : "u");
+                   return a < c.inputs.size() && all_finite(c) && abs(norm(c.inputs[a], 0, 3) - Real(1)) <= unit_band(f);
+                 }});
+  all.push_back({"rotation_matrix", "the matrix is a rotation: |M^T M - I|_F <= 64 eps and det M > 0",
+                 [](const AbiOp& op) { return op.name == "from_matrix"; },
+                 [](const AbiOp&, const Case& c, ref::Format f) {
+                   if (!all_finite(c)) return false;
+                   const auto& m = c.inputs[0];
+                   Real delta(0);
+                   for (int i = 0; i < 3; ++i)
+                     for (int j = 0; j < 3; ++j) {
+                       Real s(0);
+                       for (int r = 0; r < 3; ++r) s += m[i * 3 + r] * m[j * 3 + r];
+                       delta += (s - Real(i == j ? 1 : 0)) * (s - Real(i == j ? 1 : 0));
+                     }
+                   const Real det = m[0] * (m[4] * m[8] - m[7] * m[5]) - m[3] * (m[1] * m[8] - m[7] * m[2]) +
+                                    m[6] * (m[1] * m[5] - m[4] * m[2]);
+                   return sqrt(delta) <= unit_band(f) && det > 0;
+                 }});
+  all.push_back({"t_in_unit_interval", "the interpolation parameter t lies in [0, 1]",
+                 [](const AbiOp& op) { return is_interpolation(op); },
+                 [](const AbiOp& op, const Case& c, ref::Format) {
+                   const std::size_t a = input_index(op, "t");
+                   return a < c.inputs.size() && !c.inputs[a].empty() && c.inputs[a][0] >= 0 && c.inputs[a][0] <= 1;
+                 }});
+  all.push_back({"same_hemisphere", "the two inputs of an interpolation have a.b >= 0 (the caller aligns them)",
+                 [](const AbiOp& op) { return is_interpolation(op); },
+                 [](const AbiOp&, const Case& c, ref::Format) {
+                   if (!all_finite(c)) return false;
+                   Real d(0);
+                   for (int i = 0; i < 4; ++i) d += c.inputs[0][i] * c.inputs[1][i];
+                   return d >= 0;
+                 }});
+  return all;
+}
+
+std::vector<AcceptableConvention> build_conventions() {
+  std::vector<AcceptableConvention> all;
+  const auto is = [](const char* name) { return [name](const AbiOp& op) { return op.name == name; }; };
+
+  // MAT-2: q and -q are one rotation; the canonical sign (w > 0) is the spec's choice.
+  all.push_back({"sign", "from_matrix returns -q of the canonical q (w > 0): the same rotation", false, is("from_matrix"),
+                 [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   return unit_rotation_error(got[0], quat(want[0]));
+                 }});
+
+  // AXANG-1: (theta, u) and (2 pi - theta, -u), or (theta - 2 pi, u), describe one rotation; the
+  // identity has every unit axis. Compared as rotations, with a unit axis required.
+  auto axis_angle_error = [](const Values& got, const Values& want) -> Real {
+    const Real h = got[0][0] / Real(2);
+    const Quat g{cos(h), sin(h) * got[1][0], sin(h) * got[1][1], sin(h) * got[1][2]};
+    const Real hw = want[0][0] / Real(2);
+    const Quat w{cos(hw), sin(hw) * want[1][0], sin(hw) * want[1][1], sin(hw) * want[1][2]};
+    const Real axis_defect = abs(norm(got[1], 0, 3) - Real(1));
+    if (mpfr::isnan(axis_defect)) return axis_defect;
+    return std::max(clause::METRIC_1_rotation_distance(g, w), axis_defect);
+  };
+  const auto identity = [](const Values& want) { return want[0][0] == 0 || want[0][0] >= Real(2) * ref::ScalarTraits<Real>::pi(); };
+  all.push_back({"identity_axis", "to_axis_angle of the identity rotation (angle 0 or 2 pi) returns another unit axis",
+                 false, is("to_axis_angle"),
+                 [identity](const AbiOp&, const Case&, const Values& want, ref::Format) { return identity(want); },
+                 [axis_angle_error, identity](const AbiOp&, const Case&, const Values& got, const Values& want,
+                                              ref::Format) -> std::optional<Real> {
+                   if (!identity(want)) return std::nullopt;
+                   return axis_angle_error(got, want);
+                 }});
+  all.push_back({"angle_range", "to_axis_angle returns the angle in another range ([0, pi] with the axis flipped, or signed)",
+                 false, is("to_axis_angle"),
+                 [identity](const AbiOp&, const Case&, const Values& want, ref::Format) { return !identity(want); },
+                 [axis_angle_error, identity](const AbiOp&, const Case&, const Values& got, const Values& want,
+                                              ref::Format) -> std::optional<Real> {
+                   if (identity(want)) return std::nullopt;
+                   return axis_angle_error(got, want);
+                 }});
+
+  // LOG-1/LOG-2: every v with exp(v) = +-q and |v| <= pi is a logarithm of the rotation; the
+  // principal branch (and +z for a negative real q) is the spec's choice.
+  auto log_error = [](const Values& got, const Values& want) -> Real {
+    const Real n = norm(got[0], 0, 3);
+    if (mpfr::isnan(n)) return n;
+    const auto e = clause::EXP_1_exp(V3{got[0][0], got[0][1], got[0][2]});
+    const auto w = clause::EXP_1_exp(V3{want[0][0], want[0][1], want[0][2]});
+    const Real excess = std::max(Real(0), n - ref::ScalarTraits<Real>::pi());  // beyond the principal range
+    return std::max(clause::METRIC_1_rotation_distance(e.value, w.value), excess);
+  };
+  const auto negative_real = [](const Values& want) {
+    return want[0][0] == 0 && want[0][1] == 0 && want[0][2] != 0 && abs(want[0][2]) >= ref::ScalarTraits<Real>::pi() - Real(1e-30);
+  };
+  const auto obtuse = [](const Values& want) { return norm(want[0], 0, 3) > ref::ScalarTraits<Real>::pi() / Real(2); };
+  all.push_back({"minus_one_axis", "log of a negative real quaternion returns pi times another unit axis", false, is("log"),
+                 [negative_real](const AbiOp&, const Case&, const Values& want, ref::Format) { return negative_real(want); },
+                 [log_error, negative_real](const AbiOp&, const Case&, const Values& got, const Values& want,
+                                            ref::Format) -> std::optional<Real> {
+                   if (!negative_real(want)) return std::nullopt;
+                   return log_error(got, want);
+                 }});
+  all.push_back({"shorter_arc", "log returns the logarithm of -q (|v| <= pi/2) where w < 0: the same rotation", false, is("log"),
+                 [obtuse, negative_real](const AbiOp&, const Case&, const Values& want, ref::Format) {
+                   return obtuse(want) && !negative_real(want);
+                 },
+                 [log_error, obtuse, negative_real](const AbiOp&, const Case&, const Values& got, const Values& want,
+                                                    ref::Format) -> std::optional<Real> {
+                   if (!obtuse(want) || negative_real(want)) return std::nullopt;
+                   return log_error(got, want);
+                 }});
+
+  // EDGE-3: at a hemisphere tie (|a.b| within rounding of 0) both arcs have the same length; the
+  // spec breaks the tie one way ("flip iff a.b < 0 strictly"), a library may break it the other.
+  const auto pairwise = [](const AbiOp& op) { return op.name == "slerp" || op.name == "nlerp"; };
+  all.push_back({"hemisphere_tie", "at a hemisphere tie (|a.b| <= 8 eps) the other hemisphere is taken", false,
+                 [pairwise](const AbiOp& op) {
+                   return pairwise(op) || op.name == "dq_sclerp" || op.name == "blend_qlb" || op.name == "blend_log" ||
+                          op.name == "dq_blend" || op.name == "skin_dual_quaternion";
+                 },
+                 [pairwise](const AbiOp& op, const Case& c, const Values&, ref::Format f) {
+                   if (!all_finite(c)) return false;
+                   if (pairwise(op) || op.name == "dq_sclerp") return near_tie(normalised_dot(c.inputs[0], 0, c.inputs[1], 0), f);
+                   const std::size_t wa = input_index(op, "w");
+                   return !tied_influences(c, 0, wa, op.name == "dq_blend" ? 8 : 4, f).empty();
+                 },
+                 [pairwise](const AbiOp& op, const Case& c, const Values& got, const Values&,
+                            ref::Format f) -> std::optional<Real> {
+                   if (!all_finite(c)) return std::nullopt;
+                   if (pairwise(op)) {
+                     const Real d = normalised_dot(c.inputs[0], 0, c.inputs[1], 0);
+                     if (!near_tie(d, f)) return std::nullopt;
+                     // The other branch: b' = -(the spec's b').
+                     const Quat a = unit(quat(c.inputs[0])), b = unit(quat(c.inputs[1]));
+                     const bool spec_flip = ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
+                     const Real t = c.inputs[2][0];
+                     Quat other;
+                     if (op.name == "slerp") {
+                       other = clause::detail::quaternion(
+                           clause::detail::rotor_interpolation(clause::detail::rotor(a), clause::detail::rotor(b), t, !spec_flip));
+                     } else {
+                       const Quat bb = spec_flip ? b : -b;
+                       other = ref::normalized(Quat{(Real(1) - t) * a.w + t * bb.w, (Real(1) - t) * a.x + t * bb.x,
+                                                    (Real(1) - t) * a.y + t * bb.y, (Real(1) - t) * a.z + t * bb.z});
+                     }
+                     return unit_rotation_error(got[0], other);
+                   }
+                   // Blends and ScLERP: the other side of an exact tie is the reference on the
+                   // tied influence negated (a dot of -0 does not flip).
+                   Values in = c.inputs;
+                   if (op.name == "dq_sclerp") {
+                     if (normalised_dot(c.inputs[0], 0, c.inputs[1], 0) != 0) return std::nullopt;
+                     for (Real& x : in[1]) x = -x;
+                   } else {
+                     const std::size_t wa = input_index(op, "w");
+                     const int s = op.name == "dq_blend" ? 8 : 4;
+                     bool any = false;
+                     for (std::size_t i : tied_influences(c, 0, wa, s, f)) {
+                       const long p = pivot_of(c.inputs[wa]);
+                       std::vector<Real> reals;
+                       for (std::size_t j = 0; j < 4; ++j) reals.push_back(c.inputs[0][i * s + j]);
+                       for (std::size_t j = 0; j < 4; ++j) reals.push_back(c.inputs[0][std::size_t(p) * s + j]);
+                       if (normalised_dot(reals, 0, reals, 1) != 0) continue;
+                       for (int j = 0; j < s; ++j) in[0][i * s + j] = -in[0][i * s + j];
+                       any = true;
+                     }
+                     if (!any) return std::nullopt;
+                   }
+                   const ReferenceResult alt = op.reference(in, c.k);
+                   if (alt.status != ref::Status::ok) return std::nullopt;
+                   return output_error(op, got, alt.outputs, c, f);
+                 }});
+  // Declared only: an interpolation documented as oriented (no hemisphere flip: glm::mix) goes
+  // from a to b itself, the long arc where a.b < 0. Undefined at an exact antipode.
+  all.push_back({"oriented", "the interpolation is oriented: from a to b itself, no hemisphere flip (declared)", true, pairwise,
+                 [](const AbiOp&, const Case& c, const Values&, ref::Format) {
+                   return all_finite(c) && ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
+                 },
+                 [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
+                   if (!all_finite(c) || ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) >= 0) return std::nullopt;
+                   const Quat a = unit(quat(c.inputs[0])), b = unit(quat(c.inputs[1]));
+                   if (ref::dot(a, b) <= Real(-1)) return std::nullopt;  // antipodes: no oriented arc
+                   const Real t = c.inputs[2][0];
+                   const Quat other =
+                       op.name == "slerp"
+                           ? clause::detail::quaternion(clause::detail::rotor_interpolation(
+                                 clause::detail::rotor(a), clause::detail::rotor(b), t, false))
+                           : ref::normalized(Quat{(Real(1) - t) * a.w + t * b.w, (Real(1) - t) * a.x + t * b.x,
+                                                  (Real(1) - t) * a.y + t * b.y, (Real(1) - t) * a.z + t * b.z});
+                   return unit_rotation_error(got[0], other);
+                 }});
+  return all;
+}
+
+}  // namespace
+
+Declarations declarations_of(const rc_impl& table) {
+  Declarations d;
+  if (table.abi_version < 2) return d;
+  for (int i = 0; table.preconditions && table.preconditions[i]; ++i) d.preconditions.insert(table.preconditions[i]);
+  for (int i = 0; table.conventions && table.conventions[i]; ++i) d.conventions.insert(table.conventions[i]);
+  return d;
+}
+
+const std::vector<Precondition>& preconditions() {
+  static const std::vector<Precondition> all = build_preconditions();
+  return all;
+}
+
+const Precondition* find_precondition(const std::string& id) {
+  for (const Precondition& p : preconditions())
+    if (p.id == id) return &p;
+  return nullptr;
+}
+
+const Precondition* violated_precondition(const Declarations& d, const AbiOp& op, const Case& c, ref::Format f) {
+  if (d.preconditions.empty()) return nullptr;
+  for (const Precondition& p : preconditions())
+    if (d.has_precondition(op.name, p.id) && p.applies(op) && !p.holds(op, c, f)) return &p;
+  return nullptr;
+}
+
+const std::vector<AcceptableConvention>& acceptable_conventions() {
+  static const std::vector<AcceptableConvention> all = build_conventions();
+  return all;
+}
+
+std::vector<std::string> acceptable_for_case(const AbiOp& op, const Case& c, ref::Format f) {
+  std::vector<std::string> ids;
+  const ReferenceResult want = op.reference(c.inputs, c.k);
+  if (want.status != ref::Status::ok) return ids;
+  for (const AcceptableConvention& a : acceptable_conventions())
+    if (a.applies(op) && a.relevant(op, c, want.outputs, f)) ids.push_back(a.id);
+  return ids;
+}
+
+}  // namespace rotorcert::engine
