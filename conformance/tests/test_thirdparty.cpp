@@ -91,7 +91,7 @@ TEST(ThirdParty, VectorsAdapterIsCertifiedByTheGradingOfVectorsCheck) {
     ASSERT_NE(c, nullptr) << id;
     EXPECT_EQ(c->at("outcome"), "PASS") << id;
     EXPECT_EQ(c->at("reproduce"), "rotorcert thirdparty --adapter python_example --clause " + std::string(id) +
-                                      " --cases 4 --out third-party-python_example");
+                                      " --cases 4 --search 0 --out third-party-python_example");
   }
   EXPECT_TRUE(fs::exists(f.o.out / "python_example/results.json"));
 }

@@ -286,4 +286,40 @@ std::vector<MutantClause> mutant_clauses(const json& mutant) {
 
 std::string dump(const json& value, int indent) { return value.dump(indent, ' ', false, json::error_handler_t::replace); }
 
+std::vector<std::string> verdict_notes(const json& c) {
+  std::vector<std::string> notes;
+  if (c.contains("status") && c["status"].is_object()) {
+    const json& st = c["status"];
+    notes.push_back("status (RESULT-2): " + str(st, "failures") + " input(s) with a wrong status, first " + str(st, "op") +
+                    " [" + str(st, "label") + "] " + str(st, "input") + ": " + str(st, "detail"));
+  }
+  for (const json& a : arr(c, "acceptable"))
+    notes.push_back(std::string(a.value("declared", false) ? "declared convention " : "ACCEPTABLE (ACC-1) ") +
+                    str(a, "convention") + " x" + str(a, "count") + ", e.g. " + str(a, "op") + " [" + str(a, "label") +
+                    "] " + str(a, "input"));
+  if (c.contains("excluded") && c["excluded"].is_object() && !c["excluded"].empty()) {
+    std::vector<std::string> parts;
+    for (const auto& [id, n] : c["excluded"].items()) parts.push_back(id + " x" + dump(n));
+    notes.push_back("not judged, outside declared preconditions (DECL-1): " + join(parts, ", "));
+  }
+  for (const json& d : arr(c, "diagnoses")) {
+    std::string line = "CONV-1: " + str(d, "convention") + " explains " + str(d, "explained") + " of " +
+                       str(d, "failing") + " failing inputs";
+    if (!arr(d, "unexplained").empty()) line += "; not explained: " + join(arr(d, "unexplained"), " | ");
+    notes.push_back(line);
+  }
+  if (c.contains("searched") && c["searched"].is_number() && c["searched"].get<double>() > 0)
+    notes.push_back("worst-case search: " + str(c, "searched") + " calls around the worst inputs");
+  return notes;
+}
+
+std::string declarations_text(const json& cert) {
+  std::vector<std::string> parts;
+  if (!arr(cert, "declared_preconditions").empty())
+    parts.push_back("preconditions " + join(arr(cert, "declared_preconditions"), ", "));
+  if (!arr(cert, "declared_conventions").empty())
+    parts.push_back("conventions " + join(arr(cert, "declared_conventions"), ", "));
+  return parts.empty() ? "" : "Declared (DECL-1): " + join(parts, "; ");
+}
+
 }  // namespace rotorcert::report::detail

@@ -455,6 +455,7 @@ void render_certificate(std::ostream& out, const json& cert, const json& platfor
       out << "<li><strong>" << esc(str(e, "clause")) << "</strong>: " << esc(str(e, "why")) << "</li>\n";
     out << "</ul>\n";
   }
+  if (const std::string d = declarations_text(cert); !d.empty()) out << "<p class=\"note\">" << esc(d) << "</p>\n";
   if (!arr(cert, "clauses").empty()) {
     out << "<h3>Certificate</h3>\n<div class=\"scroll\">\n<table class=\"certificate\">\n<thead><tr>"
            "<th>Clause</th><th>Level</th><th>Tolerance</th><th>Outcome</th><th class=\"num\">Cases</th>"
@@ -478,6 +479,7 @@ void render_certificate(std::ostream& out, const json& cert, const json& platfor
       out << "</td><td class=\"detail\">" << esc(str(w, "detail"));
       if (!arr(c, "conventions").empty())
         out << "<div class=\"note\">passes under: " << esc(join(arr(c, "conventions"), ", ")) << "</div>";
+      for (const std::string& n : verdict_notes(c)) out << "<div class=\"note\">" << esc(n) << "</div>";
       out << "</td><td>" << esc(str(c, "expected_failure")) << "</td><td class=\"repro\">";
       if (!str(c, "reproduce").empty()) out << "<code>" << esc(str(c, "reproduce")) << "</code>";
       out << "</td></tr>\n";

@@ -170,6 +170,7 @@ void render_certificate(std::ostream& out, const json& cert, const json& platfor
       out << "- " << str(e, "clause") << ": " << cell(str(e, "why")) << "\n";
     out << "\n";
   }
+  if (const std::string d = declarations_text(cert); !d.empty()) out << d << "\n\n";
   if (!arr(cert, "clauses").empty()) {
     out << "### Certificate\n\n";
     header(out, {"Clause", "Level", "Tolerance", "Outcome", "Cases", "Failures", "Worst (" + std::string(kEps) + ")",
@@ -183,6 +184,7 @@ void render_certificate(std::ostream& out, const json& cert, const json& platfor
       if (!str(c, "note").empty()) detail.push_back("note: " + str(c, "note"));
       if (!str(worst, "detail").empty()) detail.push_back(str(worst, "detail"));
       if (!arr(c, "conventions").empty()) detail.push_back("passes under: " + join(arr(c, "conventions"), ", "));
+      for (const std::string& n : verdict_notes(c)) detail.push_back(n);
       row(out, {cell(str(c, "id")), cell(str(c, "level")), cell(str(c, "tolerance")), cell(outcome),
                 str(c, "cases"), str(c, "failures"),
                 has_worst ? error_eps_text(worst.contains("error_eps") ? worst["error_eps"] : json()) : "",

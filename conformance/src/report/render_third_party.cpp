@@ -12,6 +12,19 @@
 namespace rotorcert::report::detail {
 
 namespace {
+/// The standalone reproducer of a defect (issue #16): its file, language and the command that runs
+/// it against the unmodified library.
+std::string reproducer_html(const json& defect) {
+  if (!defect.contains("reproducer") || !defect["reproducer"].is_object())
+    return "<strong class=\"no\">none</strong>";
+  const json& r = defect["reproducer"];
+  return esc(str(r, "language")) + " <code>" + esc(str(r, "file")) + "</code><div class=\"note\"><code>" +
+         esc(str(r, "run")) + "</code></div>";
+}
+}  // namespace
+
+
+namespace {
 
 constexpr const char* kTitle = "Third-party libraries (REPORT-3)";
 
@@ -146,7 +159,7 @@ void render_third_party_html(std::ostream& out, const json& section) {
     out << "<p class=\"muted\">None found.</p>\n";
   } else {
     out << "<div class=\"scroll\">\n<table class=\"third-party-defects\">\n<thead><tr><th>Library</th><th>Clause</th><th>Outcome</th>"
-           "<th>Worst input (hexfloat)</th><th>Error</th><th>What</th><th>Known defect</th><th>Reproduce</th></tr></thead>\n<tbody>\n";
+           "<th>Worst input (hexfloat)</th><th>Error</th><th>What</th><th>Known defect</th><th>Reproducer (the library's own language)</th><th>Reproduce the certificate</th></tr></thead>\n<tbody>\n";
     for (const json& lib : arr(section, "libraries"))
       for (const json& d : arr(lib, "defects")) {
         const json& worst = d.contains("worst") ? d["worst"] : json();
@@ -157,7 +170,7 @@ void render_third_party_html(std::ostream& out, const json& section) {
             << esc(error_eps_text(worst.is_object() && worst.contains("error_eps") ? worst["error_eps"] : json())) << " " << kEps
             << "</td><td>" << esc(worst_text(worst)) << (str(worst, "detail").empty() ? "" : ": " + esc(str(worst, "detail")))
             << "</td><td>" << (str(d, "known") == "true" ? esc(str(d, "why")) : "<strong class=\"no\">not listed</strong>")
-            << "</td><td><code>" << esc(str(d, "reproduce")) << "</code></td></tr>\n";
+            << "</td><td>" << reproducer_html(d) << "</td><td><code>" << esc(str(d, "reproduce")) << "</code></td></tr>\n";
       }
     out << "</tbody>\n</table>\n</div>\n";
   }
@@ -219,13 +232,19 @@ void render_third_party_markdown(std::ostream& out, const json& section) {
   bool any = false;
   for (const json& lib : arr(section, "libraries"))
     for (const json& d : arr(lib, "defects")) {
-      if (!any) header(out, {"library", "clause", "outcome", "worst input", "error (eps)", "what", "known defect", "reproduce"});
+      if (!any)
+        header(out, {"library", "clause", "outcome", "worst input", "error (eps)", "what", "known defect", "reproducer",
+                     "reproduce the certificate"});
       any = true;
       const json& worst = d.contains("worst") ? d["worst"] : json();
       row(out, {cell(str(lib, "name") + " " + str(d, "scalar")), code(str(d, "clause")), str(d, "outcome"), code(str(worst, "input")),
                 error_eps_text(worst.is_object() && worst.contains("error_eps") ? worst["error_eps"] : json()),
                 cell(worst_text(worst) + (str(worst, "detail").empty() ? "" : ": " + str(worst, "detail"))),
-                cell(str(d, "known") == "true" ? str(d, "why") : "NOT LISTED"), code(str(d, "reproduce"))});
+                cell(str(d, "known") == "true" ? str(d, "why") : "NOT LISTED"),
+                d.contains("reproducer") && d["reproducer"].is_object()
+                    ? cell(str(d["reproducer"], "language") + ": ") + code(str(d["reproducer"], "run"))
+                    : "none",
+                code(str(d, "reproduce"))});
     }
   out << (any ? "\n" : "None found.\n\n");
 }

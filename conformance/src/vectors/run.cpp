@@ -82,6 +82,9 @@ ordered_json run_table(const rc_impl& table, const VectorSet& set, const std::fi
                          {"description", info.description},
                          {"claimed_clauses", info.claimed_clauses},
                          {"claimed_levels", info.claimed_levels}};
+  // DECL-1: the table's declarations travel with its results, so `vectors check` judges as certify.
+  if (!info.declared_preconditions.empty()) j["implementation"]["preconditions"] = info.declared_preconditions;
+  if (!info.declared_conventions.empty()) j["implementation"]["conventions"] = info.declared_conventions;
   j["vectors"] = std::filesystem::absolute(set.index).lexically_relative(base).generic_string();
   j["unsupported_ops"] = unsupported;
   j["results"] = results;

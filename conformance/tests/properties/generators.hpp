@@ -106,19 +106,25 @@ inline std::vector<Family> families_for(const std::string& clause, const std::st
   using F = Family;
   const bool rigid = op.rfind("dq_", 0) == 0 || op == "rotate_about_axis" || op.rfind("skin_", 0) == 0;
   if (clause == "NORM-1") return {F::random, F::non_unit, F::extreme_scale, F::subnormal};
-  if (clause == "COMPOSE-1" || clause == "INV-1") return {F::random, F::non_unit};  // defined unnormalised
-  if (clause == "MAT-2") return {F::random, F::half_turn, F::near_antipodal};
+  if (clause == "INV-1") return {F::random, F::non_unit};  // defined unnormalised
+  if (clause == "MAT-2") return {F::random, F::half_turn, F::near_antipodal, F::near_identity};
+  // LEVEL-1's ordinary families: small angles and angles near a full turn for single rotations,
+  // near-identical and near-antipodal pairs (exact antipodes included) for interpolations.
+  if (clause == "COMPOSE-1") return {F::random, F::non_unit, F::near_identity, F::near_antipodal};
+  if (clause == "MAT-1" || clause == "APPLY-1" || clause == "LOG-1" || clause == "EXP-1")
+    return {F::random, F::near_identity, F::near_antipodal};
+  if (clause == "SLERP-1") return {F::random, F::near_identity, F::near_antipodal, F::antipode};
   // The domain errors a clause's own text and worked examples define (MAT-3: EX-MAT-3-e..g;
   // AXANG-2: "zero or non-finite axis"; DQ-1: EX-DQ-1-g, a zero rotation) are drawn under it as
   // well as under EDGE-6 / EDGE-7: without them a defect that lives only on that set (glm's
   // dualquat(0, t) = 0 with status OK) is found by no property of the clause it is charged to.
   if (clause == "MAT-3") return {F::perturbed_matrix, F::reflection, F::nonfinite};
-  if (clause == "AXANG-1") return {F::random, F::angle_near_2pi, F::negative_real};
-  if (clause == "AXANG-2") return {F::random, F::bad_axis, F::nonfinite};
+  if (clause == "AXANG-1") return {F::random, F::angle_near_2pi, F::negative_real, F::near_identity};
+  if (clause == "AXANG-2") return {F::random, F::bad_axis, F::nonfinite, F::near_identity};
   if (clause == "DQ-1") return {F::random, F::large_translation, F::zero};
   if (clause == "LOG-2") return {F::negative_real};
-  if (clause == "EXP-2") return {F::random, F::angle_near_2pi, F::negative_real};
-  if (clause == "SLERP-2" || clause == "NLERP-1") return {F::random, F::t_outside};
+  if (clause == "EXP-2") return {F::random, F::angle_near_2pi, F::negative_real, F::near_identity};
+  if (clause == "SLERP-2" || clause == "NLERP-1") return {F::random, F::t_outside, F::near_antipodal, F::antipode};
   if (clause == "SLERP-3") return {F::t_endpoint};
   if (clause == "SLERP-4") return {F::t_outside};
   if (clause == "SLERP-5") return {F::t_grid};
@@ -255,7 +261,8 @@ inline Case ordinary(const engine::AbiOp& op, std::size_t k = 0) {
     const auto m = ref::clause::MAT_1_to_matrix(unit_quaternion()).value;
     c.inputs = {{m.begin(), m.end()}};
   } else if (n == "from_axis_angle") {
-    c.inputs = {{Real(*symmetric(7 * 1024)) / Real(1024)}, vec(-1, 1)};
+    // A unit axis: a non-unit one is an EDGE-5 input (drawn there, bad_axis).
+    c.inputs = {{Real(*symmetric(7 * 1024)) / Real(1024)}, flat(direction())};
   } else if (n == "exp") {
     c.inputs = {vec(-2, 1)};  // |v| up to 10: exp has no restriction on |v| (EXP-1)
   } else if (n == "slerp" || n == "nlerp") {

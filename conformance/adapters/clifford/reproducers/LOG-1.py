@@ -35,7 +35,7 @@ EPS, LOOSE = 2.0 ** -52, 256  # eps16 loose bar (spec/clauses.json)
 # Input: the suite's worst case, a rotation by 2 pi - 2.9e-8 rad (w = -1 exactly, |v| = 1.45e-8).
 q = [float.fromhex(h) for h in ("0x1.b189397c6bba8p-28", "-0x1.b7d73a93018f7p-28",
                                  "0x1.55f8638fc30bfp-28", "-0x1p+0")]
-# ORDINARY = [0.1, -0.2, 0.3, -0.9]   # (a rotor with a well-separated w: no defect, exit 1)
+# Ordinary input: q = [c / 0.95 ** 0.5 for c in (0.1, -0.2, 0.3, -0.9)] gives 18 eps, exit 1.
 
 print("rotorcert reproducer: clifford %s %s: clifford.tools.log_rotor of a rotor near -1 (a rotation by "
       "2 pi - 3e-8) returns a 3e8-rad bivector whose exp is neither q nor -q" % (clifford.__version__, CLAUSE))
@@ -45,14 +45,23 @@ with contextlib.redirect_stdout(io.StringIO()):  # log_rotor print()s some argum
 got = [-float(L[(2, 3)]), float(L[(1, 3)]), -float(L[(1, 2)])]
 
 # Correct value, independently in 50-digit decimal: |v| = sqrt(x^2 + y^2 + z^2); for w < 0,
-# atan2(|v|, w) = pi - atan(|v|/|w|), atan(t) = t - t^3/3 + t^5/5 (t < 1e-7: the rest is < 1e-56).
+# atan2(|v|, w) = pi - atan(|v|/|w|), with atan(t) = 2 atan(t / (1 + sqrt(1 + t^2))) until t < 0.01,
+# then its series t - t^3/3 + t^5/5 - ... (16 terms: the rest is below 1e-60).
 D = decimal.Decimal
 decimal.getcontext().prec = 50
 PI = D("3.14159265358979323846264338327950288419716939937511")
+
+
+def atan(t):
+    k = 0
+    while t > D("0.01"):
+        t, k = t / (1 + (1 + t * t).sqrt()), k + 1
+    return 2 ** k * sum((-1) ** i * t ** (2 * i + 1) / (2 * i + 1) for i in range(16))
+
+
 vd = [D(c) for c in q[:3]]
 n = sum(c * c for c in vd).sqrt()
-t = n / abs(D(q[3]))
-at = t - t ** 3 / 3 + t ** 5 / 5
+at = atan(n / abs(D(q[3])))
 principal = [float(c * (PI - at) / n) for c in vd]   # atan2(|v|, w) v/|v|, |.| = pi - 1.45e-8
 of_minus_q = [float(-c * at / n) for c in vd]        # log(-q) = atan(|v|/|w|) (-v)/|v|, accepted
 
