@@ -208,3 +208,52 @@ TEST(Engine, SameSeedSameCases) {
 }
 
 }  // namespace
+
+namespace {
+
+/// from_axis_angle as GLM's angleAxis: the axis is taken as given (its documented precondition is a
+/// unit axis). Declared = true declares that precondition (DECL-1), false does not.
+template <bool Declared>
+struct AxisAsGiven : Normalizer<0> {
+  static constexpr const char* const preconditions[] = {Declared ? "from_axis_angle:unit_axis" : nullptr, nullptr};
+  static ri::Status from_axis_angle(const double& angle, const ri::Vec3<double>& u, Q& out) {
+    for (double x : u)
+      if (!std::isfinite(x)) return ri::Status::domain_error;
+    if (!std::isfinite(angle) || (u[0] == 0 && u[1] == 0 && u[2] == 0)) return ri::Status::domain_error;
+    const double s = std::sin(angle / 2);
+    out = {s * u[0], s * u[1], s * u[2], std::cos(angle / 2)};
+    return ri::Status::ok;
+  }
+};
+
+}  // namespace
+
+TEST(Engine, DeclaredPreconditionsAreNotHeldAgainstATableBelowRobust) {
+  RC_CLAUSE("DECL-1");
+  RC_CLAUSE("AXANG-2");
+  RC_CLAUSE("EDGE-5");
+  // Core (AXANG-2) judges unit axes only (LEVEL-1), so both pass there.
+  EXPECT_EQ(run(ri::table<AxisAsGiven<false>>(), "AXANG-2").outcome, engine::Outcome::pass);
+  EXPECT_EQ(run(ri::table<AxisAsGiven<true>>(), "AXANG-2").outcome, engine::Outcome::pass);
+  // Robust (EDGE-5) judges non-unit axes: undeclared, the unnormalised quaternion is a FAIL ...
+  const auto undeclared = run(ri::table<AxisAsGiven<false>>(), "EDGE-5");
+  EXPECT_EQ(undeclared.outcome, engine::Outcome::fail);
+  EXPECT_TRUE(undeclared.excluded.empty());
+  // ... declared, those inputs are outside the precondition: not judged, and the Robust clause is
+  // NOT_SUPPORTED (it requires them to be handled), with the count and the reason.
+  const auto declared = run(ri::table<AxisAsGiven<true>>(), "EDGE-5");
+  EXPECT_EQ(declared.outcome, engine::Outcome::not_supported) << declared.note;
+  ASSERT_EQ(declared.excluded.count("unit_axis"), 1u);
+  EXPECT_GT(declared.excluded.at("unit_axis"), 0u);
+  EXPECT_NE(declared.note.find("unit_axis"), std::string::npos) << declared.note;
+}
+
+TEST(Engine, AVersion1TableDeclaresNothing) {
+  RC_CLAUSE("DECL-1");
+  // The declarations are ABI version 2 fields: a version-1 table's memory ends before them, so the
+  // suite must not read them even if the bytes happen to be there.
+  rc_impl t = *ri::table<AxisAsGiven<true>>();
+  EXPECT_FALSE(engine::declarations_of(t).empty());
+  t.abi_version = 1;
+  EXPECT_TRUE(engine::declarations_of(t).empty());
+}
