@@ -5,8 +5,9 @@
 
 Runs `rotorcert thirdparty --adapter NAME --out DIR` (REPORT-3) and reads DIR/report.json:
   - certified: passes when the library is as expected -- exactly the clauses of its
-    expected_failures.json FAIL, every other claimed clause passes -- and every defect states its
-    worst input and error; prints the certificate's defects either way;
+    expected_failures.json FAIL, every other claimed clause passes (or is NOT_SUPPORTED) -- and
+    every defect states its worst input and error and has a reproducer file; prints the
+    certificate's defects either way;
   - not run because its registry package could not be installed (scripts/setup-adapters recorded
     the failure in ENV/NAME/status.json): exit 77, a skip, with the installer's reason;
   - anything else (not run for another reason, the adapter failed, not as expected): exit 1.
@@ -80,6 +81,12 @@ def main(argv):
         worst = d.get("worst") or {}
         if not worst.get("input") or "error_eps" not in worst:
             failures.append("defect %s %s states no worst input or error" % (d["scalar"], d["clause"]))
+        # Issue #16: every defect has a reproducer in the library's own language (REPORT-3); the
+        # ctest reproducer_<adapter>_<file> runs it against the unmodified library.
+        rep = d.get("reproducer")
+        if not rep or not os.path.isfile(rep.get("file", "")):
+            failures.append("defect %s %s has no reproducer in conformance/adapters/%s/reproducers/" %
+                            (d["scalar"], d["clause"], args.adapter))
     if lib["as_expected"] is not True:
         failures.append("the section says the library is not as expected")
     for f in failures:

@@ -271,6 +271,10 @@ std::map<std::string, std::string> read_expected_failures(const std::filesystem:
   return result;
 }
 
+std::filesystem::path builtin_expected_failures_file(const std::string& impl_name) {
+  return std::filesystem::path(ROTORCERT_SOURCE_DIR) / "impls" / impl_name / "expected_failures.json";
+}
+
 std::map<std::string, std::string> expected_failures(const std::string& impl_name, const std::string& scalar) {
   // The file sits in the directory of the implementation that provides the table; a directory
   // may provide several tables (glm_quat also provides glm_mix), so every file is read.

@@ -328,17 +328,20 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
   };
   const bool rotation_valued = single || op == "exp" || op == "from_axis_angle" || op == "from_matrix" || op == "compose";
   if (rotation_valued) {
+    // One angle per decade whatever n is (2e-9, 2e-8, ..., 2): no decade is left to chance.
+    for (int k = -9; k <= 0; ++k) cases.push_back(rotation_case(Real(2) * pow(Real(10), Real(k)), "angle sweep 1e-9 .. pi"));
     for (int i = 0; i < n; ++i) cases.push_back(rotation_case(swept_angle(g, i, n), "angle sweep 1e-9 .. pi"));
     for (int i = 0; i < n; ++i)
       cases.push_back(rotation_case(Real(2) * pi - shortfall(g, i, n), "near a full turn: 2 pi - 1e-9 .. 1e-1"));
     return;
   }
   if (op == "slerp" || op == "nlerp") {
-    for (int i = 0; i < n; ++i) {
+    for (int i = -10; i < n; ++i) {  // i < 0: one pair distance per decade, 2e-9 .. 2
       Case c = random_case(g, op);
       const Quat a = g.unit_quaternion();
       c.inputs[0] = flat(a);
-      c.inputs[1] = flat(g.rounded(a * Gen::rotation(swept_angle(g, i, n), g.direction())));
+      const Real distance = i < 0 ? Real(2) * pow(Real(10), Real(i + 1)) : swept_angle(g, i, n);
+      c.inputs[1] = flat(g.rounded(a * Gen::rotation(distance, g.direction())));
       c.label = "pair distance sweep 1e-9 .. pi";
       cases.push_back(c);
     }

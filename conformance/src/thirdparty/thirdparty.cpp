@@ -113,10 +113,13 @@ void finish(json& lib, int cases_per_family) {
 void attach_reproducers(json& lib, const Manifest& m) {
   if (!lib.contains("defects")) return;
   std::map<std::string, std::string> named;  // scalar/clause -> file
-  const fs::path ef = m.dir / "expected_failures.json";
-  if (fs::exists(ef))
-    for (const json& f : spec::read_json(ef).at("failures"))
-      if (f.contains("reproducer"))
+  // A third party's known defects sit beside its adapter; a built-in table's in impls/.
+  const fs::path ef = m.builtin.empty() ? m.dir / "expected_failures.json" : certify::builtin_expected_failures_file(m.builtin);
+  // A local: a range-for over read_json(ef).at(...) would iterate a destroyed temporary.
+  const json listed = fs::exists(ef) ? spec::read_json(ef) : json::object();
+  if (listed.contains("failures"))
+    for (const json& f : listed.at("failures"))
+      if (f.contains("reproducer") && f.value("table", "") == (m.builtin.empty() ? m.name : m.builtin))
         named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
   for (json& d : lib.at("defects")) {
     const std::string clause = d.at("clause"), scalar = d.at("scalar");
@@ -307,7 +310,6 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       libs[i]["certificates"].push_back(certify::certificate_json(spec, g.certificate, g.levels));
       finish(libs[i], o.certify.cases.cases_per_family);
       attach_reproducers(libs[i], m);
-    attach_reproducers(libs[i], manifests[i]);
     } catch (const std::exception& e) {
       libs[i]["status"] = "error";
       libs[i]["reason"] = std::string("its results file cannot be graded: ") + e.what();

@@ -69,6 +69,9 @@ struct Certificate {
 std::map<std::string, std::string> read_expected_failures(const std::filesystem::path& file, const std::string& table,
                                                           const std::string& scalar);
 
+/// impls/<impl_name>/expected_failures.json (the file of the implementation directory of that name).
+std::filesystem::path builtin_expected_failures_file(const std::string& impl_name);
+
 /// Known defects of a built-in implementation: impls/<name>/expected_failures.json, entries of
 /// this table's scalar type. Empty when the file does not exist.
 std::map<std::string, std::string> expected_failures(const std::string& impl_name, const std::string& scalar);
