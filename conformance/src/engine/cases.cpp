@@ -297,6 +297,37 @@ std::pair<Quat, Quat> near_antipodal_pair(Gen& g, int i, int n) {
   return {a, g.rounded(-(a * Gen::rotation(shortfall(g, i, n), g.direction())))};
 }
 
+/// Puts the rotations a and b into the first two quaternion slots of `op`'s case: the influences 0
+/// and 1 of a blend, or the two inputs of an interpolation; for dual-quaternion ops the real parts
+/// of two rigid motions (translations drawn here), DQ-4 normalised and rounded.
+void set_pair(Gen& g, Case& c, const std::string& op, const Quat& a, const Quat& b) {
+  const bool nway = find_abi_op(op)->nway;
+  if (op == "dq_blend" || op == "dq_sclerp") {
+    auto d0 = g.rigid(1), d1 = g.rigid(1);
+    d0.real = a;
+    d1.real = b;
+    std::vector<Real> f0 = flat(ref::clause::DQ_4_normalize(d0).value), f1 = flat(ref::clause::DQ_4_normalize(d1).value);
+    for (auto* v : {&f0, &f1})
+      for (Real& x : *v) x = g.round(x);
+    if (nway) {
+      std::copy(f0.begin(), f0.end(), c.inputs[0].begin());
+      std::copy(f1.begin(), f1.end(), c.inputs[0].begin() + 8);
+    } else {
+      c.inputs[0] = f0;
+      c.inputs[1] = f1;
+    }
+    return;
+  }
+  const auto fa = flat(a), fb = flat(b);
+  if (nway) {
+    std::copy(fa.begin(), fa.end(), c.inputs[0].begin());
+    std::copy(fb.begin(), fb.end(), c.inputs[0].begin() + 4);
+  } else {
+    c.inputs[0] = fa;
+    c.inputs[1] = fb;
+  }
+}
+
 /// The ordinary families of LEVEL-1 for an operation clause (Core .. Skinning): a logarithmic
 /// angle sweep over [1e-9, pi], rotations near a full turn (1e-9 .. 1e-1 short of 2 pi), and for
 /// pairs and blends near-antipodal pairs (rounded dot below -1 included), near-identical pairs
@@ -367,25 +398,10 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
     return;
   }
   if (op == "blend_qlb" || op == "blend_log" || op == "dq_blend") {
-    const int stride = op == "dq_blend" ? 8 : 4;
     for (int i = 0; i < n; ++i) {
       Case c = random_case(g, op, 2);
       const auto [a, b] = near_antipodal_pair(g, i, n);
-      if (stride == 4) {
-        const auto fa = flat(a), fb = flat(b);
-        std::copy(fa.begin(), fa.end(), c.inputs[0].begin());
-        std::copy(fb.begin(), fb.end(), c.inputs[0].begin() + 4);
-      } else {
-        auto d0 = g.rigid(1), d1 = g.rigid(1);
-        d0.real = a;
-        d1.real = b;
-        d0 = ref::clause::DQ_4_normalize(d0).value;
-        d1 = ref::clause::DQ_4_normalize(d1).value;
-        std::vector<Real> ds = flat(d0);
-        append(ds, flat(d1));
-        for (Real& x : ds) x = g.round(x);
-        c.inputs[0] = ds;
-      }
+      set_pair(g, c, op, a, b);
       c.label = "near-antipodal influences";
       cases.push_back(c);
     }
@@ -395,13 +411,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
     for (int i = 0; i < n; ++i) {
       Case c = random_case(g, op);
       const auto [a, b] = near_antipodal_pair(g, i, n);
-      auto d0 = g.rigid(1), d1 = g.rigid(1);
-      d0.real = a;
-      d1.real = b;
-      c.inputs[0] = flat(ref::clause::DQ_4_normalize(d0).value);
-      c.inputs[1] = flat(ref::clause::DQ_4_normalize(d1).value);
-      for (auto* v : {&c.inputs[0], &c.inputs[1]})
-        for (Real& x : *v) x = g.round(x);
+      set_pair(g, c, op, a, b);
       c.label = "near-antipodal real parts";
       cases.push_back(c);
     }
@@ -548,36 +558,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       // products pair up and cancel. A half turn between them: the tie of the hemisphere rule.
       Quat b{a.z, -a.y, a.x, -a.w};
       if (i % 3 == 2) b = -a;  // exact antipode: flips, constant interpolation
-      if (op == "blend_qlb" || op == "dq_blend") {
-        if (op == "blend_qlb") {
-          const auto fa = flat(a), fb = flat(b);
-          std::copy(fa.begin(), fa.end(), c.inputs[0].begin());
-          std::copy(fb.begin(), fb.end(), c.inputs[0].begin() + 4);
-        } else {
-          auto d0 = g.rigid(1), d1 = g.rigid(1);
-          d0.real = a;
-          d1.real = b;
-          d0 = ref::clause::DQ_4_normalize(d0).value;
-          d1 = ref::clause::DQ_4_normalize(d1).value;
-          const auto f0 = flat(d0), f1 = flat(d1);
-          std::vector<Real> ds(f0);
-          append(ds, f1);
-          for (Real& x : ds) x = g.round(x);
-          c.inputs[0] = ds;
-        }
-      } else if (op == "dq_sclerp") {
-        auto d0 = g.rigid(1), d1 = g.rigid(1);
-        d0.real = a;
-        d1.real = b;
-        c.inputs[0] = flat(g.rounded(ref::clause::DQ_4_normalize(d0).value.real));
-        c.inputs[0] = flat(ref::clause::DQ_4_normalize(d0).value);
-        c.inputs[1] = flat(ref::clause::DQ_4_normalize(d1).value);
-        for (auto* v : {&c.inputs[0], &c.inputs[1]})
-          for (Real& x : *v) x = g.round(x);
-      } else {
-        c.inputs[0] = flat(a);
-        c.inputs[1] = flat(b);
-      }
+      set_pair(g, c, op, a, b);
       return labelled(c, i % 3 == 2 ? "exact antipode" : "dot exactly 0");
     });
   } else if (clause == "EDGE-4") {
