@@ -257,3 +257,31 @@ TEST(Engine, AVersion1TableDeclaresNothing) {
   t.abi_version = 1;
   EXPECT_TRUE(engine::declarations_of(t).empty());
 }
+
+namespace {
+bool has_label(const std::vector<engine::Check>& checks, const std::string& label) {
+  for (const engine::Check& c : checks)
+    for (const engine::Case& x : c.cases)
+      if (x.label == label) return true;
+  return false;
+}
+std::vector<engine::Check> checks_of(const char* clause, ref::Format f) {
+  engine::CaseOptions o;
+  o.cases_per_family = 2;
+  return engine::checks_for_clause(the_spec(), clause, f, o, [](const std::string& op) { return op == "normalize"; });
+}
+}  // namespace
+
+TEST(Engine, ExtremeExamplesAreJudgedByRobustAndNeverChangeMeaningInBinary32) {
+  RC_CLAUSE("LEVEL-1");
+  RC_CLAUSE("EDGE-5");
+  // EX-NORM-1-h, q = (0x1.8p-999, 0, 0, 0x1p-998): an extreme scale, so NORM-1 (Core) does not judge
+  // it; EDGE-5 (Robust) does, in binary64 ...
+  EXPECT_FALSE(has_label(checks_of("NORM-1", ref::Format::binary64), "example EX-NORM-1-h"));
+  EXPECT_TRUE(has_label(checks_of("EDGE-5", ref::Format::binary64), "example EX-NORM-1-h"));
+  // ... and in binary32 it would round to the zero quaternion, another case (EDGE-6): not used there.
+  EXPECT_FALSE(has_label(checks_of("EDGE-5", ref::Format::binary32), "example EX-NORM-1-h"));
+  EXPECT_FALSE(has_label(checks_of("EDGE-6", ref::Format::binary32), "example EX-NORM-1-h"));
+  // An ordinary example stays with its clause in both formats.
+  EXPECT_TRUE(has_label(checks_of("NORM-1", ref::Format::binary32), "example EX-NORM-1-a"));
+}
