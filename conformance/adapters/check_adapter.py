@@ -62,6 +62,12 @@ def main(argv):
         print("FAIL: %s: %s" % (lib["status"], lib["reason"]))
         return 1
 
+    # Listed defects marked "intermittent" (the library reads uninitialised memory): FAIL or not.
+    listed_file = os.path.join(os.path.dirname(os.path.abspath(__file__)), args.adapter, "expected_failures.json")
+    intermittent = set()
+    if os.path.isfile(listed_file):
+        with open(listed_file) as f:
+            intermittent = {(e["scalar"], e["clause"]) for e in json.load(f)["failures"] if e.get("intermittent")}
     failures = []
     for cert in lib["certificates"]:
         print("%s (%s): %s" % (cert["name"], cert["scalar"], cert["claim"]))
@@ -70,6 +76,8 @@ def main(argv):
                 continue
             listed = c["expected_failure"] is not None
             ok = c["outcome"] == "FAIL" if listed else c["outcome"] in ("PASS", "QUALITY_WARNING")
+            if listed and (cert["scalar"], c["id"]) in intermittent:
+                ok = c["outcome"] in ("FAIL", "PASS", "QUALITY_WARNING")
             worst = c.get("worst") or {}
             print("  %-10s %-16s %s%s" % (c["id"], c["outcome"], "known defect " if listed else "",
                                           "" if ok else "<- NOT AS EXPECTED"))
