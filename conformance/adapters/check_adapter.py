@@ -92,7 +92,8 @@ def main(argv):
         # Issue #16: every defect has a reproducer in the library's own language (REPORT-3); the
         # ctest reproducer_<adapter>_<file> runs it against the unmodified library.
         rep = d.get("reproducer")
-        if not rep or not os.path.isfile(rep.get("file", "")):
+        root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        if not rep or not os.path.isfile(os.path.join(root, rep.get("file", ""))):
             failures.append("defect %s %s has no reproducer in conformance/adapters/%s/reproducers/" %
                             (d["scalar"], d["clause"], args.adapter))
     if lib["as_expected"] is not True:

@@ -145,7 +145,10 @@ void attach_reproducers(json& lib, const Manifest& m) {
       d["reproducer"] = nullptr;
       continue;
     }
-    const fs::path path = m.dir / "reproducers" / file;
+    // Relative to the checkout (conformance/adapters/NAME/reproducers/FILE): the same report.json
+    // wherever the tree lies, and a path a maintainer can paste.
+    const fs::path root = m.dir.parent_path().parent_path().parent_path();
+    const fs::path path = (m.dir / "reproducers" / file).lexically_relative(root);
     const std::string stem = fs::path(file).stem().string(), ext = fs::path(file).extension().string();
     std::string run = ext == ".py" ? "build/adapters/" + m.name + "/venv/bin/python " + path.string()
                       : ext == ".js" ? "NODE_PATH=build/adapters/" + m.name + "/node_modules node " + path.string()
