@@ -161,8 +161,7 @@ struct EigenQuat {
   static Status blend_qlb(std::span<const Quat<S>> q, std::span<const S> w, Quat<S>& out) {
     if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     Eigen::Matrix<S, 4, 1> sum = Eigen::Matrix<S, 4, 1>::Zero();
-    std::size_t pivot = 0;  // QLB-1: the first influence of positive weight
-    while (pivot + 1 < q.size() && !(w[pivot] > S(0))) ++pivot;
+    const std::size_t pivot = rotorcert::impl::first_positive_weight(w);  // QLB-1
     for (std::size_t i = 0; i < q.size(); ++i) {
       const EQuat<S> qi = to_eigen(q[i]);
       sum += (qi.dot(to_eigen(q[pivot])) < S(0) ? -w[i] : w[i]) * qi.coeffs();

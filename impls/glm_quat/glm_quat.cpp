@@ -194,7 +194,7 @@ struct GlmQuat {
   static Status blend_qlb(std::span<const Quat<S>> q, std::span<const S> w, Quat<S>& out) {
     if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
     glm::qua<S> sum = zero_quat<S>();
-    const std::size_t p = pivot(w);
+    const std::size_t p = rotorcert::impl::first_positive_weight(w);
     for (std::size_t i = 0; i < q.size(); ++i) {
       const glm::qua<S> qi = to_glm(q[i]);
       const S wi = glm::dot(qi, to_glm(q[p])) < S(0) ? -w[i] : w[i];
@@ -268,16 +268,9 @@ struct GlmQuat {
   }
 
  private:
-  /// The first influence of positive weight (QLB-1, DQ-6); 0 if none (the call is then outside
-  /// the domain, EDGE-9, and GLM computes whatever it computes).
-  static std::size_t pivot(std::span<const S> w) {
-    std::size_t p = 0;
-    while (p + 1 < w.size() && !(w[p] > S(0))) ++p;
-    return p;
-  }
   static glm::tdualquat<S> dlb(const std::vector<glm::tdualquat<S>>& d, std::span<const S> w) {
     glm::tdualquat<S> sum(zero_quat<S>(), zero_quat<S>());
-    const std::size_t p = pivot(w);
+    const std::size_t p = rotorcert::impl::first_positive_weight(w);
     for (std::size_t i = 0; i < d.size(); ++i) {
       const S wi = glm::dot(d[i].real, d[p].real) < S(0) ? -w[i] : w[i];
       sum = sum + wi * d[i];

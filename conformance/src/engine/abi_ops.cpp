@@ -235,6 +235,28 @@ int call(const rc_impl& table, const std::string& op, std::size_t n, std::size_t
   return -1;
 }
 
+Real block_norm(const std::vector<Real>& v, std::size_t from, std::size_t n) {
+  Real s(0);
+  for (std::size_t i = from; i < from + n && i < v.size(); ++i) s += v[i] * v[i];
+  return sqrt(s);
+}
+
+bool is_axis_input(const AbiOp& op, const Array& a) {
+  return (op.name == "from_axis_angle" && a.name == "axis") || (op.name == "rotate_about_axis" && a.name == "u");
+}
+
+Real orthogonality_defect(const std::vector<Real>& m) {
+  Real delta(0);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Real s(0);
+      for (int r = 0; r < 3; ++r) s += m[i * 3 + r] * m[j * 3 + r];
+      const Real d = s - Real(i == j ? 1 : 0);
+      delta += d * d;
+    }
+  return sqrt(delta);
+}
+
 bool supports(const rc_impl& table, const std::string& op) {
   // Only the slot is inspected: probing must not run code of the implementation.
   const AbiOp* desc = find_abi_op(op);

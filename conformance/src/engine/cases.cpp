@@ -815,11 +815,6 @@ std::string robust_clause_of(const AbiOp& op, const Case& c, ref::Format f) {
           std::all_of(w.begin(), w.end(), [](const Real& x) { return x == 0; }))
         return "EDGE-9";
     }
-  auto block_norm = [](const std::vector<Real>& v, std::size_t from, std::size_t n) {
-    Real s(0);
-    for (std::size_t i = from; i < from + n && i < v.size(); ++i) s += v[i] * v[i];
-    return sqrt(s);
-  };
   std::string kind;
   auto note = [&](const char* k) {
     // The most specific kind wins: zero (EDGE-6) over subnormal (EDGE-8) over scale (EDGE-5).
@@ -831,7 +826,7 @@ std::string robust_clause_of(const AbiOp& op, const Case& c, ref::Format f) {
     const auto& v = c.inputs[a];
     for (const Real& x : v)
       if (x != 0 && abs(x) < min_normal) note("EDGE-8");
-    const bool axis = (op.name == "from_axis_angle" && arr.name == "axis") || (op.name == "rotate_about_axis" && arr.name == "u");
+    const bool axis = is_axis_input(op, arr);
     if (arr.stride == 4 || arr.stride == 8 || axis) {
       const std::size_t block = static_cast<std::size_t>(arr.stride);
       const std::size_t part = arr.stride == 8 ? 4 : block;  // the real part of a dual quaternion

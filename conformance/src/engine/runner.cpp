@@ -142,18 +142,7 @@ bool all_nan(const std::vector<Real>& v) {
 ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& c, const Real& eps) {
   if (tc.kind == "exact") return {0, 0};
   if (tc.kind == "formula") {  // inherited-mat: 16 eps + 2 delta / 256 eps + 8 delta, delta of the input
-    Real delta(0);
-    if (op.name == "from_matrix") {
-      const auto& m = c.inputs[0];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          Real s(0);
-          for (int r = 0; r < 3; ++r) s += m[i * 3 + r] * m[j * 3 + r];
-          const Real d = s - Real(i == j ? 1 : 0);
-          delta += d * d;
-        }
-      delta = sqrt(delta);
-    }
+    const Real delta = op.name == "from_matrix" ? orthogonality_defect(c.inputs[0]) : Real(0);
     return {(Real(16) + Real(2) * delta / eps).toDouble(), (Real(256) + Real(8) * delta / eps).toDouble()};
   }
   const auto strict = tc.strict_value(), loose = tc.loose_value();
@@ -490,14 +479,9 @@ Real ulp_step(const Real& x, long k, ref::Format f) {
 /// (a rounded unit quaternion is within 2 eps of unit), so the walk explores rounding, not scale.
 void keep_unit_blocks(const AbiOp& op, const Case& start, Case& n, ref::Format f) {
   const Real band = Real(64) * ref::format_epsilon<Real>(f);
-  auto block_norm = [](const std::vector<Real>& v, std::size_t j, std::size_t len) {
-    Real s(0);
-    for (std::size_t i = j; i < j + len; ++i) s += v[i] * v[i];
-    return sqrt(s);
-  };
   for (std::size_t a = 0; a < op.inputs.size(); ++a) {
     const Array& arr = op.inputs[a];
-    const bool axis = (op.name == "from_axis_angle" && arr.name == "axis") || (op.name == "rotate_about_axis" && arr.name == "u");
+    const bool axis = is_axis_input(op, arr);
     const std::size_t stride = static_cast<std::size_t>(arr.stride);
     if (arr.stride != 4 && arr.stride != 8 && !axis) continue;
     const std::size_t part = arr.stride == 8 ? 4 : stride;

@@ -81,12 +81,21 @@ json defects_of(const json& cert) {
 /// not reach a listed defect's input, so there such a clause is "not reproduced", not a surprise.
 /// Listed defects whose entry says "intermittent": true (the library reads uninitialised memory, so
 /// whether the defect shows depends on the stack it finds): not reproducing one is no surprise.
+/// The entries of a library's expected_failures.json that are its own (a built-in table's file is
+/// in impls/ and may list other tables); empty when there is no file.
+std::vector<json> listed_failures(const Manifest& m) {
+  const fs::path ef = m.builtin.empty() ? m.dir / "expected_failures.json" : certify::builtin_expected_failures_file(m.builtin);
+  std::vector<json> r;
+  if (!fs::exists(ef)) return r;
+  const json listed = spec::read_json(ef);  // a local: a range-for over read_json(ef).at(...) would dangle
+  for (const json& f : listed.at("failures"))
+    if (f.value("table", "") == (m.builtin.empty() ? m.name : m.builtin)) r.push_back(f);
+  return r;
+}
+
 std::set<std::string> intermittent_defects(const Manifest& m) {
   std::set<std::string> r;
-  const fs::path ef = m.builtin.empty() ? m.dir / "expected_failures.json" : certify::builtin_expected_failures_file(m.builtin);
-  if (!fs::exists(ef)) return r;
-  const json listed = spec::read_json(ef);
-  for (const json& f : listed.at("failures"))
+  for (const json& f : listed_failures(m))
     if (f.value("intermittent", false)) r.insert(f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>());
   return r;
 }
@@ -126,14 +135,9 @@ void finish(json& lib, int cases_per_family, const std::set<std::string>& interm
 void attach_reproducers(json& lib, const Manifest& m) {
   if (!lib.contains("defects")) return;
   std::map<std::string, std::string> named;  // scalar/clause -> file
-  // A third party's known defects sit beside its adapter; a built-in table's in impls/.
-  const fs::path ef = m.builtin.empty() ? m.dir / "expected_failures.json" : certify::builtin_expected_failures_file(m.builtin);
-  // A local: a range-for over read_json(ef).at(...) would iterate a destroyed temporary.
-  const json listed = fs::exists(ef) ? spec::read_json(ef) : json::object();
-  if (listed.contains("failures"))
-    for (const json& f : listed.at("failures"))
-      if (f.contains("reproducer") && f.value("table", "") == (m.builtin.empty() ? m.name : m.builtin))
-        named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
+  for (const json& f : listed_failures(m))
+    if (f.contains("reproducer"))
+      named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
   for (json& d : lib.at("defects")) {
     const std::string clause = d.at("clause"), scalar = d.at("scalar");
     std::string file;

@@ -50,6 +50,15 @@ bool usable_weights(std::span<const S> w) {
   return positive;
 }
 
+/// The pivot of the blend rules (QLB-1, DQ-6): the first influence of positive weight (-0 and
+/// NaN are not positive); the last index when there is none (the caller has rejected that set).
+template <class S>
+std::size_t first_positive_weight(std::span<const S> w) {
+  std::size_t p = 0;
+  while (p + 1 < w.size() && !(w[p] > S(0))) ++p;
+  return p;
+}
+
 template <class S> using Quat = std::array<S, 4>;      // [x, y, z, w]
 template <class S> using Vec3 = std::array<S, 3>;      // [x, y, z]; bivectors [e23, e31, e12]
 template <class S> using Mat3 = std::array<S, 9>;      // column-major

@@ -66,6 +66,17 @@ const std::vector<AbiOp>& abi_ops();
 /// The op of that name, or nullptr.
 const AbiOp* find_abi_op(const std::string& name);
 
+/// The Euclidean norm of v[from .. from + n) (the elements past v's end count as absent): one
+/// quaternion, axis or real part of a dual quaternion of an input array.
+Real block_norm(const std::vector<Real>& v, std::size_t from, std::size_t n);
+
+/// Whether input array `a` of `op` is a rotation axis (AXANG-2's axis, AXIS-1's u): normalised by
+/// its clause like a quaternion, so it has the quaternions' scale classes and unit band.
+bool is_axis_input(const AbiOp& op, const Array& a);
+
+/// ||M^T M - I||_F of a column-major 3x3 matrix: how far it is from orthogonal (MAT-3's delta).
+Real orthogonality_defect(const std::vector<Real>& m);
+
 /// Whether the table has that op (non-NULL pointer).
 bool supports(const rc_impl& table, const std::string& op);
 
