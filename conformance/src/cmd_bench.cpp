@@ -19,6 +19,7 @@
 #include <memory>
 
 #include <rotorcert/certify/certify.hpp>
+#include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/report/speed.hpp>
 
 #include "certify_cli.hpp"

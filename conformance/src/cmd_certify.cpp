@@ -7,6 +7,8 @@
 #include <memory>
 
 #include <rotorcert/certify/certify.hpp>
+#include <rotorcert/certify/print.hpp>
+#include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/registry.hpp>
 
 #include "certify_cli.hpp"
@@ -50,13 +52,11 @@ int run(const Args& a) {
   }
 
   const auto certs = certify::certify_targets(spec, targets, options);
-  std::vector<certify::json> cj;
-  for (const certify::Certificate& c : certs) cj.push_back(certify::certificate_json(spec, c, options.levels));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const certify::json report =
-      certify::report_json(spec, "certify", certify::options_json(options), run_json(seconds, command_line(), options.jobs), cj);
+      certify::report_json(spec, "certify", certify::options_json(options), run_json(seconds, command_line(), options.jobs), certs);
   if (!a.common.quiet)
-    for (const certify::json& c : cj) certify::print_certificate(std::cout, c, a.common.verbose);
+    for (const certify::Certificate& c : certs) certify::print_certificate(std::cout, c, a.common.verbose);
   try {
     certify::write_report(a.common.out, report);
   } catch (const std::exception& e) {

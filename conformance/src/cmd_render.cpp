@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <rotorcert/certify/certificate.hpp>
+#include <rotorcert/certify/atomic_file.hpp>
 #include <rotorcert/registry.hpp>
 #include <rotorcert/render/character.hpp>
 #include <rotorcert/render/gltf_load.hpp>

@@ -15,6 +15,8 @@
 #include <memory>
 
 #include <rotorcert/certify/certify.hpp>
+#include <rotorcert/certify/print.hpp>
+#include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/render/render_check.hpp>
 #include <rotorcert/report/speed.hpp>
 
@@ -170,11 +172,10 @@ int run(const Args& a) {
   }
 
   const auto certs = certify::certify_targets(spec, targets, options);
-  std::vector<certify::json> cj;
-  for (std::size_t i = 0; i < builtin_count; ++i) cj.push_back(certify::certificate_json(spec, certs[i], options.levels));
+  const std::vector<certify::Certificate> builtin(certs.begin(), certs.begin() + static_cast<std::ptrdiff_t>(builtin_count));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   certify::json report =
-      certify::report_json(spec, "report", certify::options_json(options), run_json(seconds, command_line(), options.jobs), cj);
+      certify::report_json(spec, "report", certify::options_json(options), run_json(seconds, command_line(), options.jobs), builtin);
   if (mutants_note.empty()) {
     certify::json section = mutants_section(mutants, certs, builtin_count, a.mutant_dir);
     if (section.at("killed") != section.at("total")) report["summary"]["exit_code"] = 1;
@@ -194,23 +195,24 @@ int run(const Args& a) {
     report["sections"]["render"] = {{"note", render_note}};
   }
 
-  // Third-party libraries (issue 8): GLM and Eigen reuse the certificates just made.
+  // Third-party libraries (REPORT-3): GLM and Eigen reuse the certificates just made.
+  thirdparty::Outcome third_party;
   if (a.no_third_party) {
     report["sections"]["third_party"] = {{"note", "left out (--no-third-party)"}};
   } else {
     thirdparty::KnownCertificates known;
-    for (const certify::json& c : cj) known[c.at("name").get<std::string>() + "/" + c.at("scalar").get<std::string>()] = c;
+    for (const certify::Certificate& c : builtin) known[c.table.name + "/" + c.table.scalar] = c;
     ThirdPartyRequest request = a.third_party;
     request.out = (std::filesystem::path(a.common.out) / "third_party").string();
     request.quiet = a.common.quiet;
-    thirdparty::Outcome outcome;
-    const int rc = run_third_party(request, spec, options, known, "rotorcert report: third-party", outcome);
+    certify::json section;
+    const int rc = run_third_party(request, spec, options, known, "rotorcert report: third-party", third_party, section);
     if (rc == kExitUsage) return kExitUsage;
     if (rc != kExitOk) {
       report["summary"]["as_expected"] = false;
       report["summary"]["exit_code"] = 1;
     }
-    report["sections"]["third_party"] = std::move(outcome.section);
+    report["sections"]["third_party"] = std::move(section);
   }
 
   // Speed (issue 7): the quick benchmark run into OUT/bench, after certifying so that no child
@@ -240,7 +242,10 @@ int run(const Args& a) {
       rc = run_bench(request, "rotorcert report: bench", bench);
     }
     try {
-      report["sections"]["speed"] = rc == kExitOk ? report::speed_section(bench, cj, bench_file)
+      // The accuracy of each op comes from the certificates as report.json shows them, the same
+      // input `rotorcert bench --accuracy report.json` reads.
+      const std::vector<certify::json> shown(report.at("implementations").begin(), report.at("implementations").end());
+      report["sections"]["speed"] = rc == kExitOk ? report::speed_section(bench, shown, bench_file)
                                                   : certify::json{{"note", "the benchmark run failed; see " + bench_file + " and bench.log"}};
     } catch (const std::exception& e) {
       report["sections"]["speed"] = {{"note", std::string("no speed section: ") + e.what()}};
@@ -248,7 +253,7 @@ int run(const Args& a) {
   }
 
   if (!a.common.quiet) {
-    for (const certify::json& c : cj) certify::print_certificate(std::cout, c, a.common.verbose);
+    for (const certify::Certificate& c : builtin) certify::print_certificate(std::cout, c, a.common.verbose);
     if (mutants_note.empty())
       std::cout << "mutants killed: " << report["summary"]["mutants_killed"] << " of " << report["summary"]["mutants_total"]
                 << '\n';
@@ -260,8 +265,7 @@ int run(const Args& a) {
                 << (rs.at("as_expected").get<bool>() ? "every method as expected" : "some methods NOT as expected") << '\n';
     else
       std::cout << "render check: " << rs.at("note").get<std::string>() << '\n';
-    if (report["sections"]["third_party"].contains("libraries"))
-      print_third_party_summary(std::cout, report["sections"]["third_party"]);
+    if (!a.no_third_party) print_third_party_summary(std::cout, third_party);
     const certify::json& sp = report["sections"]["speed"];
     if (sp.contains("targets"))
       print_speed_summary(std::cout, sp);

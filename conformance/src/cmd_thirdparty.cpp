@@ -11,6 +11,9 @@
 #include <iostream>
 #include <memory>
 
+#include <rotorcert/certify/print.hpp>
+#include <rotorcert/certify/report_document.hpp>
+#include <rotorcert/certify/verdict.hpp>
 #include <rotorcert/thirdparty/thirdparty.hpp>
 
 #include "certify_cli.hpp"
@@ -37,7 +40,8 @@ ThirdPartyRequest::ThirdPartyRequest()
     : adapters_dir(ROTORCERT_ADAPTERS_DIR), env_dir(default_adapters_env()), plugin_dir(ROTORCERT_ADAPTER_PLUGIN_DIR) {}
 
 int run_third_party(const ThirdPartyRequest& r, const spec::Spec& spec, const certify::CertifyOptions& options,
-                    const thirdparty::KnownCertificates& known, const char* who, thirdparty::Outcome& outcome) {
+                    const thirdparty::KnownCertificates& known, const char* who, thirdparty::Outcome& outcome,
+                    nlohmann::json& section) {
   thirdparty::Options o;
   o.adapters_dir = r.adapters_dir;
   o.env_dir = r.env_dir;
@@ -53,19 +57,20 @@ int run_third_party(const ThirdPartyRequest& r, const spec::Spec& spec, const ce
     std::cerr << who << ": " << e.what() << '\n';
     return kExitUsage;
   }
-  return outcome.section.at("as_expected").get<bool>() ? kExitOk : kExitFailed;
+  section = thirdparty::section_json(outcome, o);
+  return outcome.as_expected() ? kExitOk : kExitFailed;
 }
 
-void print_third_party_summary(std::ostream& out, const nlohmann::json& section) {
-  for (const nlohmann::json& lib : section.at("libraries")) {
-    out << "third-party " << lib.at("name").get<std::string>() << ": " << lib.at("status").get<std::string>();
-    if (lib.at("status") == "certified") {
+void print_third_party_summary(std::ostream& out, const thirdparty::Outcome& outcome) {
+  for (const thirdparty::Library& lib : outcome.libraries) {
+    out << "third-party " << lib.manifest.name << ": " << thirdparty::to_string(lib.status);
+    if (lib.status == thirdparty::LibraryStatus::certified) {
       std::string claims;
-      for (const nlohmann::json& c : lib.at("certificates")) claims += (claims.empty() ? "" : "; ") + c.at("claim").get<std::string>();
-      out << ", " << lib.at("defects").size() << " defect(s), " << (lib.at("as_expected").get<bool>() ? "as expected" : "NOT as expected")
-          << " (" << claims << ")";
+      for (const certify::Certificate& c : lib.certificates) claims += (claims.empty() ? "" : "; ") + certify::claim(c);
+      out << ", " << lib.defects.size() << " defect(s), " << (lib.as_expected ? "as expected" : "NOT as expected") << " ("
+          << claims << ")";
     } else {
-      out << ": " << lib.at("reason").get<std::string>();
+      out << ": " << lib.reason;
     }
     out << '\n';
   }
@@ -86,17 +91,19 @@ int run(Args a) {
   a.request.out = a.common.out;
   a.request.quiet = a.common.quiet;
   thirdparty::Outcome outcome;
-  const int rc = run_third_party(a.request, spec, options, {}, "rotorcert thirdparty", outcome);
+  certify::json section;
+  const int rc = run_third_party(a.request, spec, options, {}, "rotorcert thirdparty", outcome, section);
   if (rc == kExitUsage) return rc;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const std::vector<certify::Certificate> certificates = outcome.certificates();
   certify::json report = certify::report_json(spec, "third-party", certify::options_json(options),
-                                              run_json(seconds, command_line(), options.jobs), outcome.certificates);
-  report["summary"]["as_expected"] = outcome.section.at("as_expected");
+                                              run_json(seconds, command_line(), options.jobs), certificates);
+  report["summary"]["as_expected"] = outcome.as_expected();
   report["summary"]["exit_code"] = rc;
-  report["sections"]["third_party"] = outcome.section;
+  report["sections"]["third_party"] = std::move(section);
   if (!a.common.quiet) {
-    for (const certify::json& c : outcome.certificates) certify::print_certificate(std::cout, c, a.common.verbose);
-    print_third_party_summary(std::cout, outcome.section);
+    for (const certify::Certificate& c : certificates) certify::print_certificate(std::cout, c, a.common.verbose);
+    print_third_party_summary(std::cout, outcome);
   }
   try {
     certify::write_report(a.common.out, report);

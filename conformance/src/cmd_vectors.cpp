@@ -15,7 +15,10 @@
 #include <string>
 #include <vector>
 
+#include <rotorcert/certify/atomic_file.hpp>
 #include <rotorcert/certify/certificate.hpp>
+#include <rotorcert/certify/print.hpp>
+#include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/registry.hpp>
 #include <rotorcert/vectors/check.hpp>
 #include <rotorcert/vectors/error.hpp>
@@ -114,16 +117,15 @@ int run_check(const Args& a) {
     throw vectors::VectorsError(set.index, "/files", std::string("no vectors of format ") + vectors::format_name(format) +
                                                          " for a " + results.scalar + " implementation");
   const vectors::Grading g = vectors::grade(spec, set, results);
-  const certify::json cert = certify::certificate_json(spec, g.certificate, g.levels);
-  certify::print_certificate(std::cout, cert, a.check.verbose);
+  certify::print_certificate(std::cout, g.certificate, a.check.verbose);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // No child processes here: no time or memory limit applies (null).
   const certify::json options = {{"seed", set.seed},       {"cases_per_family", set.cases_per_family},
-                                 {"levels", g.levels},     {"clauses", certify::json::array()},
+                                 {"levels", g.certificate.levels},     {"clauses", certify::json::array()},
                                  {"timeout_s", nullptr},   {"memory_mb", nullptr},
                                  {"isolation", "in process (vectors check)"}};
   const certify::json report =
-      certify::report_json(spec, "vectors-check", options, run_json(seconds, command_line(), 1), {cert});
+      certify::report_json(spec, "vectors-check", options, run_json(seconds, command_line(), 1), {g.certificate});
   if (!a.check.out.empty()) {
     try {
       certify::write_report(a.check.out, report);

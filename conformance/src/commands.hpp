@@ -96,10 +96,11 @@ struct ThirdPartyRequest {
 /// --adapters, --adapters-env, --plugins, --adapter-timeout.
 void add_third_party_options(CLI::App& app, ThirdPartyRequest& request);
 /// Certifies the libraries; exit code as `rotorcert thirdparty` (0 every library that ran as
-/// expected, 1 not, 2 usage), messages prefixed with `who`.
+/// expected, 1 not, 2 usage), messages prefixed with `who`. `section` is sections.third_party.
 int run_third_party(const ThirdPartyRequest& request, const spec::Spec& spec, const certify::CertifyOptions& options,
-                    const thirdparty::KnownCertificates& known, const char* who, thirdparty::Outcome& outcome);
+                    const thirdparty::KnownCertificates& known, const char* who, thirdparty::Outcome& outcome,
+                    nlohmann::json& section);
 /// One line per library: status, defects, claims, or why it did not run.
-void print_third_party_summary(std::ostream& out, const nlohmann::json& section);
+void print_third_party_summary(std::ostream& out, const thirdparty::Outcome& outcome);
 
 }  // namespace rotorcert::cli

@@ -17,6 +17,9 @@
 #include <nlohmann/json.hpp>
 
 #include <rotorcert/certify/certificate.hpp>
+#include <rotorcert/certify/atomic_file.hpp>
+#include <rotorcert/certify/report_document.hpp>
+#include <rotorcert/certify/verdict.hpp>
 #include <rotorcert/certify/isolate.hpp>
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/registry.hpp>
@@ -233,16 +236,48 @@ TEST(Levels, MetMetWithWarningsNotMet) {
                result("SLERP-1", "Interp", Outcome::pass),       result("SLERP-4", "Interp", Outcome::pass),
                result("QLB-1", "Blend", Outcome::not_supported), result("DQ-1", "Rigid", Outcome::crash),
                result("SKIN-1", "Skinning", Outcome::timeout),   result("EDGE-1", "Robust", Outcome::fail)};
-  const json levels = certify::levels_json(c, {"Core", "Interp", "Blend", "Rigid", "Skinning", "Robust"});
-  std::map<std::string, json> by;
-  for (const json& l : levels) by[l.at("level")] = l;
-  EXPECT_EQ(by.at("Core").at("status"), "met with warnings");
-  EXPECT_EQ(by.at("Core").at("clauses"), json({"MAT-2"}));
-  EXPECT_EQ(by.at("Interp").at("status"), "met");
-  for (const char* l : {"Blend", "Rigid", "Skinning", "Robust"}) EXPECT_EQ(by.at(l).at("status"), "not met") << l;
-  const json cert = certify::certificate_json(spec::load_spec(spec::resolve_spec_dir()), c,
-                                              {"Core", "Interp", "Blend", "Rigid", "Skinning", "Robust"});
-  EXPECT_NE(cert.at("claim").get<std::string>().find(": Core, Interp (binary64)"), std::string::npos) << cert.at("claim");
+  c.levels = {"Core", "Interp", "Blend", "Rigid", "Skinning", "Robust"};
+  std::map<std::string, certify::LevelResult> by;
+  for (const certify::LevelResult& l : certify::level_results(c)) by[l.level] = l;
+  EXPECT_EQ(by.at("Core").status, certify::LevelStatus::met_with_warnings);
+  EXPECT_EQ(by.at("Core").not_pass, std::vector<std::string>{"MAT-2"});
+  EXPECT_EQ(by.at("Core").counts.at(Outcome::pass), 1);
+  EXPECT_EQ(by.at("Interp").status, certify::LevelStatus::met);
+  for (const char* l : {"Blend", "Rigid", "Skinning", "Robust"}) EXPECT_EQ(by.at(l).status, certify::LevelStatus::not_met) << l;
+  EXPECT_NE(certify::claim(c).find(": Core, Interp (binary64)"), std::string::npos) << certify::claim(c);
+  // report.json says the same as the typed values it is written from.
+  const json cert = certify::certificate_json(c);
+  EXPECT_EQ(cert.at("claim"), certify::claim(c));
+  for (const json& l : cert.at("levels"))
+    EXPECT_EQ(l.at("status"), certify::to_string(by.at(l.at("level")).status)) << l.dump();
+}
+
+// A certificate is as expected when every listed defect FAILs and every other claimed clause is
+// good; a claimed clause that is NOT_SUPPORTED only because its inputs lie outside a declared
+// precondition is good (DECL-1), any other NOT_SUPPORTED is not.
+TEST(Levels, AsExpectedFromTypedCertificate) {
+  RC_CLAUSE("DECL-1");
+  using engine::Outcome;
+  certify::Certificate c;
+  c.table.name = "synthetic";
+  c.table.scalar = "float";
+  c.table.claimed_clauses = {"NORM-1", "MAT-2", "EDGE-1"};
+  c.levels = {"Core", "Robust"};
+  c.clauses = {result("NORM-1", "Core", Outcome::pass), result("MAT-2", "Core", Outcome::fail),
+               result("EDGE-1", "Robust", Outcome::not_supported), result("LOG-1", "Core", Outcome::fail)};
+  c.clauses[2].excluded["unit_quaternion"] = 3;
+  c.expected_failures["MAT-2"] = "listed";
+  EXPECT_TRUE(certify::as_expected(c));  // LOG-1 fails but is not claimed
+  EXPECT_FALSE(certify::all_claimed_good(c));
+  c.clauses[2].excluded.clear();
+  EXPECT_FALSE(certify::as_expected(c)) << "NOT_SUPPORTED without a declared precondition is a surprise";
+  c.clauses[2].excluded["unit_quaternion"] = 3;
+  c.clauses[1].outcome = Outcome::pass;
+  EXPECT_FALSE(certify::as_expected(c)) << "a listed defect that passes is news";
+  c.clauses[1].outcome = Outcome::fail;
+  c.error = "could not load";
+  EXPECT_FALSE(certify::as_expected(c));
+  EXPECT_FALSE(certify::certificate_json(c).at("as_expected").get<bool>());
 }
 
 TEST(Report, EveryBuiltinAsExpectedAndEveryMutantKilled) {

@@ -67,7 +67,7 @@ struct Fixture {
     o.certify.clauses = {"NORM-1", "COMPOSE-1"};
     o.quiet = true;
   }
-  json library() { return thirdparty::certify_third_party(the_spec(), o).section.at("libraries").at(0); }
+  json library() { return thirdparty::section_json(thirdparty::certify_third_party(the_spec(), o), o).at("libraries").at(0); }
 };
 
 const json* clause(const json& cert, const std::string& id) {

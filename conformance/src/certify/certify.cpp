@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <rotorcert/certify/platform.hpp>
+#include <rotorcert/certify/wire.hpp>
 #include <rotorcert/registry.hpp>
 
 namespace rotorcert::certify {
@@ -146,6 +147,7 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
   for (std::size_t t = 0; t < targets.size(); ++t) {
     Certificate& c = certs[t];
     c.table = targets[t].info;
+    c.levels = options.levels;
     if (targets[t].plugin_path.empty()) c.expected_failures = expected_failures(c.table.name, c.table.scalar);
     const std::vector<std::string>& clauses = targets[t].clauses.empty() ? all_clauses : targets[t].clauses;
     for (const std::string& id : clauses) {

@@ -6,6 +6,9 @@
 #include <set>
 #include <stdexcept>
 
+#include <rotorcert/certify/report_document.hpp>
+#include <rotorcert/certify/verdict.hpp>
+#include <rotorcert/certify/wire.hpp>
 #include <rotorcert/vectors/check.hpp>
 #include <rotorcert/vectors/error.hpp>
 #include <rotorcert/vectors/vector_file.hpp>
@@ -28,59 +31,14 @@ std::string log_tail(const fs::path& log, std::size_t lines = 6) {
   return tail;
 }
 
-/// What the section says about a library before it runs: its manifest, flattened.
-json library_entry(const Manifest& m, const std::string& reproduce) {
-  const json& r = m.raw;
-  return {{"name", m.name},
-          {"library", m.library},
-          {"homepage", r.value("homepage", "")},
-          {"license", r.value("license", "")},
-          {"package", r.value("package", json::object())},
-          {"route", m.route},
-          {"language", m.language},
-          {"scalars", m.scalars},
-          {"description", r.value("description", "")},
-          {"conventions", r.value("conventions", json::array())},
-          {"ops", r.value("ops", json::object())},
-          {"unsupported", r.value("unsupported", json::object())},
-          {"adapter", (fs::path("conformance/adapters") / m.name).generic_string()},
-          {"status", "not run"},
-          {"reason", ""},
-          {"reproduce", reproduce},
-          {"certificates", json::array()},
-          {"defects", json::array()},
-          {"as_expected", nullptr}};
+/// The versions the library's certificates report, each once, in order.
+std::vector<json> version_list(const Library& lib) {
+  std::vector<json> versions;
+  for (const certify::Certificate& c : lib.certificates)
+    if (std::find(versions.begin(), versions.end(), json(c.table.version)) == versions.end()) versions.emplace_back(c.table.version);
+  return versions;
 }
 
-bool bad(const std::string& outcome) { return outcome == "FAIL" || outcome == "CRASH" || outcome == "TIMEOUT"; }
-
-/// Every claimed clause that did not pass, with its worst input and error: the library's defects
-/// (known: listed in its expected_failures.json) and surprises (not listed).
-json defects_of(const json& cert) {
-  json list = json::array();
-  for (const json& c : cert.at("clauses")) {
-    if (!c.at("claimed").get<bool>() || !bad(c.at("outcome"))) continue;
-    list.push_back({{"scalar", cert.at("scalar")},
-                    {"clause", c.at("id")},
-                    {"outcome", c.at("outcome")},
-                    {"known", !c.at("expected_failure").is_null()},
-                    {"why", c.at("expected_failure")},
-                    {"cases", c.at("cases")},
-                    {"failures", c.at("failures")},
-                    {"worst", c.at("worst")},
-                    {"conventions", c.at("conventions")},
-                    {"note", c.at("note")},
-                    {"reproduce", c.at("reproduce")}});
-  }
-  return list;
-}
-
-/// Whether a library is as expected: no claimed clause fails unless listed (a new defect, or the
-/// adapter changed), and every listed defect FAILs (a pass is news too: the library was fixed).
-/// The listed defects were found with kListedAtCases cases per family; a run with fewer cases may
-/// not reach a listed defect's input, so there such a clause is "not reproduced", not a surprise.
-/// Listed defects whose entry says "intermittent": true (the library reads uninitialised memory, so
-/// whether the defect shows depends on the stack it finds): not reproducing one is no surprise.
 /// The entries of a library's expected_failures.json that are its own (a built-in table's file is
 /// in impls/ and may list other tables); empty when there is no file.
 std::vector<json> listed_failures(const Manifest& m) {
@@ -93,6 +51,8 @@ std::vector<json> listed_failures(const Manifest& m) {
   return r;
 }
 
+/// Listed defects whose entry says "intermittent": true (the library reads uninitialised memory, so
+/// whether the defect shows depends on the stack it finds): not reproducing one is no surprise.
 std::set<std::string> intermittent_defects(const Manifest& m) {
   std::set<std::string> r;
   for (const json& f : listed_failures(m))
@@ -100,55 +60,64 @@ std::set<std::string> intermittent_defects(const Manifest& m) {
   return r;
 }
 
-void finish(json& lib, int cases_per_family, const std::set<std::string>& intermittent) {
-  bool expected = true;
-  json not_reproduced = json::array();
-  for (const json& c : lib.at("certificates")) {
-    expected = expected && c.at("error").is_null();
-    for (const json& r : c.at("clauses")) {
-      if (!r.at("claimed").get<bool>()) continue;
-      const std::string outcome = r.at("outcome");
-      const bool good = certify::claimed_clause_good(r);
-      if (r.at("expected_failure").is_null()) {
-        expected = expected && good;  // a claimed clause NOT_SUPPORTED too, as certify::as_expected
-      } else if (outcome != "FAIL") {
-        const bool flaky = intermittent.count(c.at("scalar").get<std::string>() + "/" + r.at("id").get<std::string>()) > 0;
-        if (cases_per_family >= kListedAtCases && !flaky) expected = false;
-        not_reproduced.push_back({{"scalar", c.at("scalar")}, {"clause", r.at("id")}, {"outcome", outcome}});
-      }
-    }
-    for (json& d : defects_of(c)) lib.at("defects").push_back(std::move(d));
+/// Every claimed clause that did not pass, with its worst input and error: the library's defects
+/// (known: listed in its expected_failures.json) and surprises (not listed).
+void add_defects(Library& lib, const certify::Certificate& cert) {
+  for (const engine::ClauseResult& r : cert.clauses) {
+    if (!certify::claimed(cert, r.clause) || !certify::is_defect(r.outcome)) continue;
+    Defect d{cert.table.scalar, r, std::nullopt, "", std::nullopt};
+    if (const std::string* why = certify::expected_failure(cert, r.clause)) d.why = *why;
+    if (const auto rp = cert.reproduce.find(r.clause); rp != cert.reproduce.end()) d.reproduce = rp->second;
+    lib.defects.push_back(std::move(d));
   }
-  lib["status"] = "certified";
-  lib["as_expected"] = expected;
-  lib["not_reproduced"] = not_reproduced;
-  json versions = json::array();
-  for (const json& c : lib.at("certificates"))
-    if (std::find(versions.begin(), versions.end(), c.at("version")) == versions.end()) versions.push_back(c.at("version"));
-  lib["version"] = versions.size() == 1 ? versions.front() : versions;
 }
 
-/// Issue #16: every defect of a third-party library comes with a reproducer in the library's own
+/// Whether a library is as expected: no claimed clause fails unless listed (a new defect, or the
+/// adapter changed), and every listed defect FAILs (a pass is news too: the library was fixed).
+/// The listed defects were found with kListedAtCases cases per family; a run with fewer cases may
+/// not reach a listed defect's input, so there such a clause is "not reproduced", not a surprise;
+/// so is an intermittent one.
+void finish(Library& lib, int cases_per_family, const std::set<std::string>& intermittent) {
+  bool expected = true;
+  lib.defects.clear();
+  lib.not_reproduced.clear();
+  for (const certify::Certificate& c : lib.certificates) {
+    expected = expected && c.error.empty();
+    for (const engine::ClauseResult& r : c.clauses) {
+      if (!certify::claimed(c, r.clause)) continue;
+      if (certify::expected_failure(c, r.clause) == nullptr) {
+        expected = expected && certify::claimed_clause_good(r);  // NOT_SUPPORTED too, as certify::as_expected
+      } else if (r.outcome != engine::Outcome::fail) {
+        const bool flaky = intermittent.count(c.table.scalar + "/" + r.clause) > 0;
+        if (cases_per_family >= kListedAtCases && !flaky) expected = false;
+        lib.not_reproduced.push_back({c.table.scalar, r.clause, r.outcome});
+      }
+    }
+    add_defects(lib, c);
+  }
+  lib.status = LibraryStatus::certified;
+  lib.as_expected = expected;
+}
+
+/// REPORT-3: every defect of a third-party library comes with a reproducer in the library's own
 /// language that calls it directly (conformance/adapters/NAME/reproducers/, named by the
 /// "reproducer" field of expected_failures.json, else by the clause), with the command that runs it
 /// and the ctest that checks it still shows the defect.
-void attach_reproducers(json& lib, const Manifest& m) {
-  if (!lib.contains("defects")) return;
+void attach_reproducers(Library& lib) {
+  const Manifest& m = lib.manifest;
   std::map<std::string, std::string> named;  // scalar/clause -> file
   for (const json& f : listed_failures(m))
     if (f.contains("reproducer"))
       named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
-  for (json& d : lib.at("defects")) {
-    const std::string clause = d.at("clause"), scalar = d.at("scalar");
+  for (Defect& d : lib.defects) {
+    const std::string& clause = d.result.clause;
     std::string file;
-    if (const auto it = named.find(scalar + "/" + clause); it != named.end()) file = it->second;
+    if (const auto it = named.find(d.scalar + "/" + clause); it != named.end()) file = it->second;
     else
       for (const char* ext : {".cpp", ".py", ".js"})
         if (fs::exists(m.dir / "reproducers" / (clause + ext))) file = clause + ext;
-    if (file.empty() || !fs::exists(m.dir / "reproducers" / file)) {
-      d["reproducer"] = nullptr;
-      continue;
-    }
+    d.reproducer.reset();
+    if (file.empty() || !fs::exists(m.dir / "reproducers" / file)) continue;
     // Relative to the checkout (conformance/adapters/NAME/reproducers/FILE): the same report.json
     // wherever the tree lies, and a path a maintainer can paste.
     const fs::path root = m.dir.parent_path().parent_path().parent_path();
@@ -157,9 +126,69 @@ void attach_reproducers(json& lib, const Manifest& m) {
     std::string run = ext == ".py" ? "build/adapters/" + m.name + "/venv/bin/python " + path.string()
                       : ext == ".js" ? "NODE_PATH=build/adapters/" + m.name + "/node_modules node " + path.string()
                                      : "ctest --preset default -R '^reproducer_" + m.name + "_" + stem + "$' -V";
-    d["reproducer"] = {{"file", path.string()}, {"language", ext == ".cpp" ? "C++" : ext == ".py" ? "Python" : "JavaScript"},
-                       {"run", run}, {"ctest", "reproducer_" + m.name + "_" + stem}};
+    d.reproducer = Reproducer{path.string(), ext == ".cpp" ? "C++" : ext == ".py" ? "Python" : "JavaScript", run,
+                              "reproducer_" + m.name + "_" + stem};
   }
+}
+
+json defect_json(const Defect& d) {
+  json reproducer = nullptr;
+  if (d.reproducer)
+    reproducer = {{"file", d.reproducer->file}, {"language", d.reproducer->language}, {"run", d.reproducer->run},
+                  {"ctest", d.reproducer->ctest}};
+  return {{"scalar", d.scalar},
+          {"clause", d.result.clause},
+          {"outcome", engine::to_string(d.result.outcome)},
+          {"known", d.why.has_value()},
+          {"why", d.why ? json(*d.why) : json(nullptr)},
+          {"cases", d.result.cases},
+          {"failures", d.result.failures},
+          {"worst", certify::worst_json(d.result)},
+          {"conventions", d.result.conventions},
+          {"note", d.result.note},
+          {"reproduce", d.reproduce},
+          {"reproducer", reproducer}};
+}
+
+/// One library of the section: its manifest, flattened, and what the run made of it.
+json library_json(const Library& lib) {
+  const Manifest& m = lib.manifest;
+  const json& r = m.raw;
+  json j = {{"name", m.name},
+            {"library", m.library},
+            {"homepage", r.value("homepage", "")},
+            {"license", r.value("license", "")},
+            {"package", r.value("package", json::object())},
+            {"route", m.route},
+            {"language", m.language},
+            {"scalars", m.scalars},
+            {"description", r.value("description", "")},
+            {"conventions", r.value("conventions", json::array())},
+            {"ops", r.value("ops", json::object())},
+            {"unsupported", r.value("unsupported", json::object())},
+            {"adapter", (fs::path("conformance/adapters") / m.name).generic_string()},
+            {"status", to_string(lib.status)},
+            {"reason", lib.reason},
+            {"reproduce", lib.reproduce},
+            {"certificates", json::array()},
+            {"defects", json::array()},
+            {"as_expected", nullptr}};
+  for (const certify::Certificate& c : lib.certificates) j["certificates"].push_back(certify::certificate_json(c));
+  for (const Defect& d : lib.defects) j["defects"].push_back(defect_json(d));
+  if (lib.status == LibraryStatus::certified) {
+    j["as_expected"] = lib.as_expected;
+    json not_reproduced = json::array();
+    for (const NotReproduced& n : lib.not_reproduced)
+      not_reproduced.push_back({{"scalar", n.scalar}, {"clause", n.clause}, {"outcome", engine::to_string(n.outcome)}});
+    j["not_reproduced"] = not_reproduced;
+    const std::vector<json> versions = version_list(lib);
+    j["version"] = versions.size() == 1 ? versions.front() : json(versions);
+  }
+  if (lib.adapter_seconds) {
+    j["adapter_seconds"] = *lib.adapter_seconds;
+    j["adapter_log"] = lib.adapter_log;
+  }
+  return j;
 }
 
 }  // namespace
@@ -193,8 +222,13 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
     return s.insert(s.find(" --out"), run_options);
   };
 
-  std::vector<json> libs;
-  for (const Manifest& m : manifests) libs.push_back(library_entry(m, reproduce(m.name, o.certify.clauses)));
+  std::vector<Library> libs;
+  for (const Manifest& m : manifests) {
+    Library lib;
+    lib.manifest = m;
+    lib.reproduce = reproduce(m.name, o.certify.clauses);
+    libs.push_back(std::move(lib));
+  }
 
   // Route abi: one certification run over every table, children in parallel.
   struct Slot {
@@ -203,7 +237,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
   };
   std::vector<certify::Target> targets;
   std::vector<Slot> slots;
-  std::vector<std::vector<std::pair<std::string, json>>> reused(libs.size());
+  std::vector<std::vector<certify::Certificate>> made(libs.size());
   const std::vector<certify::Target> builtins = certify::builtin_targets();
   for (std::size_t i = 0; i < manifests.size(); ++i) {
     const Manifest& m = manifests[i];
@@ -211,15 +245,15 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
     for (const std::string& scalar : m.scalars) {
       if (!m.builtin.empty()) {
         if (const auto k = known.find(m.builtin + "/" + scalar); k != known.end()) {
-          reused[i].emplace_back(scalar, k->second);
+          made[i].push_back(k->second);
           continue;
         }
         const auto t = std::find_if(builtins.begin(), builtins.end(), [&](const certify::Target& b) {
           return b.info.name == m.builtin && b.info.scalar == scalar;
         });
         if (t == builtins.end()) {
-          libs[i]["status"] = "error";
-          libs[i]["reason"] = "no built-in " + scalar + " table named " + m.builtin;
+          libs[i].status = LibraryStatus::error;
+          libs[i].reason = "no built-in " + scalar + " table named " + m.builtin;
           continue;
         }
         targets.push_back(*t);
@@ -228,8 +262,8 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       }
       const fs::path path = o.plugin_dir / (m.plugin + ".so");
       if (!fs::exists(path)) {
-        libs[i]["reason"] = "the plugin " + path.string() + " was not built: its library was not found when the build was " +
-                            "configured (scripts/bootstrap installs it; then cmake --preset default again)";
+        libs[i].reason = "the plugin " + path.string() + " was not built: its library was not found when the build was " +
+                         "configured (scripts/bootstrap installs it; then cmake --preset default again)";
         break;
       }
       try {
@@ -242,8 +276,8 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
           }
         if (!found) throw std::runtime_error("it has no " + scalar + " table");
       } catch (const std::exception& e) {
-        libs[i]["status"] = "error";
-        libs[i]["reason"] = "the plugin " + path.string() + " cannot be certified: " + e.what();
+        libs[i].status = LibraryStatus::error;
+        libs[i].reason = "the plugin " + path.string() + " cannot be certified: " + e.what();
       }
     }
   }
@@ -254,22 +288,22 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       const Manifest& m = manifests[slots[t].lib];
       // Plugins' known defects live beside their adapter; built-ins' in impls/ (certify did those).
       if (!m.plugin.empty()) certs[t].expected_failures = adapter_expected_failures(m, slots[t].scalar);
-      reused[slots[t].lib].emplace_back(slots[t].scalar, certify::certificate_json(spec, certs[t], o.certify.levels));
+      made[slots[t].lib].push_back(std::move(certs[t]));
     }
   }
   for (std::size_t i = 0; i < manifests.size(); ++i) {
-    if (manifests[i].route != "abi" || reused[i].empty() || libs[i].at("status") == "error") continue;
+    if (manifests[i].route != "abi" || made[i].empty() || libs[i].status == LibraryStatus::error) continue;
     // In the manifest's scalar order, whichever route made them; every clause reproduced by the
     // one command that certifies this library.
     for (const std::string& scalar : manifests[i].scalars)
-      for (auto& [s, cert] : reused[i]) {
-        if (s != scalar) continue;
-        for (json& c : cert.at("clauses"))
-          if (!c.value("reproduce", "").empty()) c["reproduce"] = reproduce(manifests[i].name, {c.at("id").get<std::string>()});
-        libs[i]["certificates"].push_back(cert);
+      for (certify::Certificate& cert : made[i]) {
+        if (cert.table.scalar != scalar) continue;
+        for (auto& [clause, command] : cert.reproduce)
+          if (!command.empty()) command = reproduce(manifests[i].name, {clause});
+        libs[i].certificates.push_back(cert);
       }
     finish(libs[i], o.certify.cases.cases_per_family, intermittent_defects(manifests[i]));
-    attach_reproducers(libs[i], manifests[i]);
+    attach_reproducers(libs[i]);
   }
 
   // Route vectors: one export for the run, each adapter in its own environment.
@@ -277,10 +311,11 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
   bool exported = false;
   for (std::size_t i = 0; i < manifests.size(); ++i) {
     const Manifest& m = manifests[i];
+    Library& lib = libs[i];
     if (m.route != "vectors") continue;
     const Environment env = read_environment(o.env_dir, m.name);
     if (!env.installed) {
-      libs[i]["reason"] = env.reason;
+      lib.reason = env.reason;
       continue;
     }
     if (!exported) {
@@ -299,14 +334,14 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
     argv.insert(argv.end(), {"--vectors", fs::absolute(vectors_dir).string(), "--out", fs::absolute(results_file).string()});
     if (!o.quiet) std::cout << "third-party: running the " << m.name << " adapter ...\n" << std::flush;
     const ProgramRun run = run_program(argv, env.env, log, o.adapter_timeout_s);
-    libs[i]["adapter_seconds"] = run.seconds;
-    libs[i]["adapter_log"] = log.string();
+    lib.adapter_seconds = run.seconds;
+    lib.adapter_log = log.string();
     if (!run.started || run.timed_out || run.exit_code != 0 || !fs::exists(results_file)) {
-      libs[i]["status"] = "error";
-      libs[i]["reason"] = !run.started ? run.error
-                          : run.timed_out ? "the adapter ran past " + std::to_string(static_cast<int>(o.adapter_timeout_s)) + " s"
-                          : run.exit_code != 0 ? "the adapter exited with " + std::to_string(run.exit_code) + ": " + log_tail(log)
-                                               : "the adapter wrote no results file";
+      lib.status = LibraryStatus::error;
+      lib.reason = !run.started ? run.error
+                   : run.timed_out ? "the adapter ran past " + std::to_string(static_cast<int>(o.adapter_timeout_s)) + " s"
+                   : run.exit_code != 0 ? "the adapter exited with " + std::to_string(run.exit_code) + ": " + log_tail(log)
+                                        : "the adapter wrote no results file";
       continue;
     }
     try {
@@ -327,38 +362,56 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       vectors::Grading g = vectors::grade(spec, set, results);
       g.certificate.expected_failures = adapter_expected_failures(m, results.scalar);
       for (auto& [clause, command] : g.certificate.reproduce) command = reproduce(m.name, {clause});
-      libs[i]["certificates"].push_back(certify::certificate_json(spec, g.certificate, g.levels));
-      finish(libs[i], o.certify.cases.cases_per_family, intermittent_defects(m));
-      attach_reproducers(libs[i], m);
+      lib.certificates.push_back(std::move(g.certificate));
+      finish(lib, o.certify.cases.cases_per_family, intermittent_defects(m));
+      attach_reproducers(lib);
     } catch (const std::exception& e) {
-      libs[i]["status"] = "error";
-      libs[i]["reason"] = std::string("its results file cannot be graded: ") + e.what();
+      lib.status = LibraryStatus::error;
+      lib.reason = std::string("its results file cannot be graded: ") + e.what();
     }
   }
+  return {std::move(libs)};
+}
 
-  Outcome out;
+const char* to_string(LibraryStatus s) {
+  switch (s) {
+    case LibraryStatus::not_run: return "not run";
+    case LibraryStatus::certified: return "certified";
+    case LibraryStatus::error: return "error";
+  }
+  return "error";
+}
+
+bool Outcome::as_expected() const {
+  return std::all_of(libraries.begin(), libraries.end(), [](const Library& lib) {
+    return lib.status != LibraryStatus::error && (lib.status != LibraryStatus::certified || lib.as_expected);
+  });
+}
+
+std::vector<certify::Certificate> Outcome::certificates() const {
+  std::vector<certify::Certificate> all;
+  for (const Library& lib : libraries) all.insert(all.end(), lib.certificates.begin(), lib.certificates.end());
+  return all;
+}
+
+json section_json(const Outcome& outcome, const Options& o) {
   json list = json::array();
   int certified = 0, not_run = 0, errors = 0;
-  bool expected = true;
-  for (json& lib : libs) {
-    const std::string status = lib.at("status");
-    certified += status == "certified";
-    not_run += status == "not run";
-    errors += status == "error";
-    if (status == "certified") expected = expected && lib.at("as_expected").get<bool>();
-    for (const json& c : lib.at("certificates")) out.certificates.push_back(c);
-    list.push_back(std::move(lib));
+  for (const Library& lib : outcome.libraries) {
+    certified += lib.status == LibraryStatus::certified;
+    not_run += lib.status == LibraryStatus::not_run;
+    errors += lib.status == LibraryStatus::error;
+    list.push_back(library_json(lib));
   }
-  out.section = {{"adapters_dir", o.adapters_dir.string()},
-                 {"environments", o.env_dir.string()},
-                 {"seed", o.certify.cases.seed},
-                 {"cases_per_family", o.certify.cases.cases_per_family},
-                 {"certified", certified},
-                 {"not_run", not_run},
-                 {"errors", errors},
-                 {"as_expected", expected && errors == 0},
-                 {"libraries", list}};
-  return out;
+  return {{"adapters_dir", o.adapters_dir.string()},
+          {"environments", o.env_dir.string()},
+          {"seed", o.certify.cases.seed},
+          {"cases_per_family", o.certify.cases.cases_per_family},
+          {"certified", certified},
+          {"not_run", not_run},
+          {"errors", errors},
+          {"as_expected", outcome.as_expected()},
+          {"libraries", list}};
 }
 
 }  // namespace rotorcert::thirdparty

@@ -226,10 +226,10 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
     if (!contains(spec.levels, t.claimed_levels[i]) || t.claimed_levels[i] == "Meta")
       throw VectorsError(results.file, "/implementation/claimed_levels/" + std::to_string(i),
                          "\"" + t.claimed_levels[i] + "\" is not a conformance level");
-  g.levels = t.claimed_levels;
+  g.certificate.levels = t.claimed_levels;
   // The certificate covers every clause of the certified levels, and any claimed clause besides.
   for (engine::ClauseResult& r : all)
-    if (contains(g.levels, r.level) || contains(t.claimed_clauses, r.clause)) {
+    if (contains(g.certificate.levels, r.level) || contains(t.claimed_clauses, r.clause)) {
       g.certificate.reproduce[r.clause] = "rotorcert vectors check " + results.file.string();
       g.certificate.clauses.push_back(std::move(r));
     }

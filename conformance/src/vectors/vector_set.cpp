@@ -4,7 +4,7 @@
 #include <set>
 #include <sstream>
 
-#include <rotorcert/certify/certificate.hpp>
+#include <rotorcert/certify/atomic_file.hpp>
 #include <rotorcert/vectors/error.hpp>
 
 #ifndef ROTORCERT_VERSION

@@ -1,11 +1,11 @@
 // Certificates: the result of certifying one implementation table (an implementation in one
-// scalar type) against the spec, and the report that gathers them. The JSON written here is
-// report.json, format "rotorcert-report" version 1, schema spec/report.schema.json.
+// scalar type) against the spec, as a typed value.
 //
 // Every route to a certificate fills the same Certificate: `certify` and `report` (the
-// implementation runs in child processes), and `vectors check` (results written by an
-// implementation in any language). certificate_json() derives the rest: levels (LEVEL-1), the
-// claim line, accuracy tables, detected conventions, whether the results match expectations.
+// implementation runs in child processes), `vectors check` and the third-party vectors adapters
+// (results written by an implementation in any language). What follows from it is derived from
+// the typed value too (verdict.hpp: levels, claim, accuracy, as expected); JSON appears only where
+// data leaves: the child's wire format (wire.hpp) and report.json (report_document.hpp).
 #pragma once
 
 #include <filesystem>
@@ -44,16 +44,12 @@ struct TableInfo {
 };
 
 TableInfo table_info(const rc_impl& table, std::string source = "built-in", std::string plugin_path = {});
-json to_json(const TableInfo& t);
-TableInfo table_info_from_json(const json& j);
 
-/// A ClauseResult as JSON and back (the child process hands its result over this way); the
-/// error lists travel too, report.json keeps only their summaries.
-json to_json(const engine::ClauseResult& r, bool with_errors);
-engine::ClauseResult clause_result_from_json(const json& j);
-
+/// One table certified: the typed value every route fills and every writer reads (verdict.hpp
+/// derives the levels, the claim and whether it is as expected; report_document.hpp writes it).
 struct Certificate {
   TableInfo table;
+  std::vector<std::string> levels;                 // the levels certified (LEVEL-1), in spec order
   std::vector<engine::ClauseResult> clauses;       // spec order, every clause certified
   std::map<std::string, std::string> expected_failures;  // clause -> why (known defects)
   std::map<std::string, std::string> reproduce;    // clause -> one-line command
@@ -75,34 +71,5 @@ std::filesystem::path builtin_expected_failures_file(const std::string& impl_nam
 /// Known defects of a built-in implementation: impls/<name>/expected_failures.json, entries of
 /// this table's scalar type. Empty when the file does not exist.
 std::map<std::string, std::string> expected_failures(const std::string& impl_name, const std::string& scalar);
-
-/// LEVEL-1: "met", "met with warnings" or "not met" per level, from the clause results.
-json levels_json(const Certificate& c, const std::vector<std::string>& levels);
-
-/// One certificate in the report.json format (see spec/report.schema.json).
-json certificate_json(const spec::Spec& spec, const Certificate& c, const std::vector<std::string>& levels);
-
-/// Whether a claimed clause's result is as good as a table can claim: PASS, QUALITY_WARNING, or
-/// NOT_SUPPORTED only because its inputs lie outside the table's declared preconditions (DECL-1).
-bool claimed_clause_good(const json& clause_result);
-
-/// Whether a certificate holds no surprise: every expected failure FAILs, every other claimed
-/// clause is PASS or QUALITY_WARNING.
-bool as_expected(const json& certificate);
-
-/// The whole report.json object. `run` is the only part allowed to differ between runs with the
-/// same options (timings, date, host).
-json report_json(const spec::Spec& spec, const std::string& kind, const json& options, const json& run,
-                 const std::vector<json>& certificates);
-
-/// The certificate as a table for a terminal: one line per clause, then the levels.
-void print_certificate(std::ostream& out, const json& certificate, bool verbose);
-
-/// Writes `contents` to `file` atomically: a temporary file in the same directory, flushed,
-/// then renamed over the target. Readers see the old file or the new one, never a part.
-void write_atomically(const std::filesystem::path& file, const std::string& contents);
-
-/// Writes report.json, report.md and report.html into dir (created if needed), each atomically.
-void write_report(const std::filesystem::path& dir, const json& report);
 
 }  // namespace rotorcert::certify

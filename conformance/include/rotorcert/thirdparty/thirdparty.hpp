@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,12 +40,59 @@ struct Options {
 
 /// Certificates already made in this run (rotorcert report certifies GLM and Eigen anyway), keyed
 /// by "table/scalar": reused instead of certifying the table again.
-using KnownCertificates = std::map<std::string, certify::json>;
+using KnownCertificates = std::map<std::string, certify::Certificate>;
+
+/// The reproducer of a defect in the library's own language (REPORT-3):
+/// conformance/adapters/NAME/reproducers/FILE, the command that runs it and its ctest.
+struct Reproducer {
+  std::string file;      // relative to the checkout
+  std::string language;  // "C++", "Python", "JavaScript"
+  std::string run, ctest;
+};
+
+/// A claimed clause of a library that FAILed, crashed or hung: known when its expected_failures.json
+/// lists it (why), a surprise otherwise.
+struct Defect {
+  std::string scalar;
+  engine::ClauseResult result;
+  std::optional<std::string> why;  // the listed reason; empty optional: not listed
+  std::string reproduce;           // the rotorcert command
+  std::optional<Reproducer> reproducer;
+};
+
+/// A listed defect whose clause did not FAIL in this run.
+struct NotReproduced {
+  std::string scalar, clause;
+  engine::Outcome outcome;
+};
+
+enum class LibraryStatus { not_run, certified, error };
+const char* to_string(LibraryStatus s);  // "not run", "certified", "error"
+
+/// One adapter's library in the run.
+struct Library {
+  Manifest manifest;
+  std::string reproduce;  // the command that certifies it again
+  LibraryStatus status = LibraryStatus::not_run;
+  std::string reason;     // why not run, or the error
+  std::vector<certify::Certificate> certificates;  // in the manifest's scalar order
+  std::vector<Defect> defects;
+  std::vector<NotReproduced> not_reproduced;
+  bool as_expected = false;  // certified only: no surprise (thirdparty.cpp: finish)
+  std::optional<double> adapter_seconds;  // vectors route, once the adapter ran
+  std::string adapter_log;
+};
 
 struct Outcome {
-  certify::json section;                     // sections.third_party
-  std::vector<certify::json> certificates;   // every certificate made, in section order
+  std::vector<Library> libraries;  // sorted by name
+  /// Every library that ran is as expected and none gave an error.
+  bool as_expected() const;
+  /// Every certificate made, in library order.
+  std::vector<certify::Certificate> certificates() const;
 };
+
+/// sections.third_party of report.json: where the typed outcome leaves the tool.
+nlohmann::json section_json(const Outcome& outcome, const Options& o);
 
 /// Certifies the adapters chosen by `o`. Throws std::runtime_error for a malformed manifest or an
 /// unknown adapter name (usage errors).

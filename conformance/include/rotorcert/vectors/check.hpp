@@ -14,8 +14,9 @@
 namespace rotorcert::vectors {
 
 struct Grading {
-  certify::Certificate certificate;  // source "results file"; clauses in spec order
-  std::vector<std::string> levels;   // the levels certified: claimed_levels, else those of the claimed clauses
+  /// Source "results file"; clauses in spec order; levels: the claimed levels, else those of
+  /// the claimed clauses.
+  certify::Certificate certificate;
   std::size_t results = 0;           // results judged
 };
 

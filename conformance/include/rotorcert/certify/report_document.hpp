@@ -1,0 +1,33 @@
+// report.json, format "rotorcert-report" version 1 (schema spec/report.schema.json): where typed
+// certificates leave the tool. Everything the document says about a certificate (levels, claim,
+// accuracy, conventions, as expected) comes from verdict.hpp; nothing here judges.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <rotorcert/certify/certificate.hpp>
+#include <rotorcert/spec/spec.hpp>
+
+namespace rotorcert::certify {
+
+/// One certificate in the report.json format.
+json certificate_json(const Certificate& c);
+
+/// What a report's exit code asks of its certificates: `report` and `third-party` runs ask that
+/// every table is as expected (known defects FAIL, the rest passes), `certify`, `vectors-check`
+/// and `bench` that every claimed clause passes.
+bool report_ok(const std::string& kind, const std::vector<Certificate>& certificates);
+
+/// The whole report.json object. `run` is the only part allowed to differ between runs with the
+/// same options (timings, date, host).
+json report_json(const spec::Spec& spec, const std::string& kind, const json& options, const json& run,
+                 const std::vector<Certificate>& certificates);
+
+/// Writes report.json, report.md and report.html into dir (created if needed), each atomically.
+void write_report(const std::filesystem::path& dir, const json& report);
+
+}  // namespace rotorcert::certify
