@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <thread>
+
+#include <rotorcert/spec/data_layout.hpp>
 
 namespace rotorcert::cli {
 
@@ -87,7 +90,10 @@ certify::json run_json(double seconds, const std::string& command, int jobs) {
   char date[32] = {};
   const std::time_t now = std::time(nullptr) - static_cast<std::time_t>(seconds);
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  return {{"started_utc", date}, {"duration_s", seconds}, {"host", host}, {"command", command}, {"jobs", jobs}};
+  const spec::DataLayout& layout = spec::data_layout();
+  const std::filesystem::path data = layout.installed ? layout.prefix / "share/rotorcert" : layout.prefix;
+  return {{"started_utc", date}, {"duration_s", seconds}, {"host", host},
+          {"command", command}, {"jobs", jobs},   {"data_dir", data.string()}};
 }
 
 }  // namespace rotorcert::cli

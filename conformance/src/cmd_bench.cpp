@@ -23,11 +23,10 @@
 #include <rotorcert/report/speed.hpp>
 
 #include "certify_cli.hpp"
+#include <rotorcert/spec/data_layout.hpp>
+
 #include "commands.hpp"
 
-#ifndef ROTORCERT_BENCH_BINARY
-#error "ROTORCERT_BENCH_BINARY must be defined by the build"
-#endif
 
 extern char** environ;
 
@@ -43,7 +42,7 @@ int run_bench(const BenchRequest& r, const char* who, nlohmann::json& bench_json
     std::cerr << who << ": cannot create " << out << ": " << ec.message() << '\n';
     return kExitUsage;
   }
-  const std::string binary = r.binary.empty() ? ROTORCERT_BENCH_BINARY : r.binary;
+  const std::string binary = r.binary.empty() ? spec::data_layout().bench_binary.string() : r.binary;
   if (!fs::exists(binary)) {
     std::cerr << who << ": the benchmark binary " << binary
               << " does not exist (build the target rotorcert_bench, or pass --bench-binary)\n";
@@ -120,7 +119,7 @@ int run(const BenchCli& o) {
 
   nlohmann::json bench;
   std::cout << "rotorcert bench: running " << (o.request.quick ? "the quick set" : "every benchmark") << " ("
-            << (o.request.binary.empty() ? ROTORCERT_BENCH_BINARY : o.request.binary) << ") ...\n"
+            << (o.request.binary.empty() ? spec::data_layout().bench_binary.string() : o.request.binary) << ") ...\n"
             << std::flush;
   if (const int rc = run_bench(o.request, "rotorcert bench", bench); rc != kExitOk) return rc;
   nlohmann::json speed;
@@ -177,7 +176,7 @@ Command add_bench(CLI::App& parent) {
   app->add_flag("--quick", o->request.quick, "Sizes 64 and 4096 only, short runs (what `rotorcert report` runs)");
   app->add_option("--filter", o->request.filter, "Only benchmarks matching this regex (Google Benchmark's filter)");
   app->add_option("--bench-binary", o->request.binary, "The rotorcert_bench executable")
-      ->default_str(ROTORCERT_BENCH_BINARY);
+      ->default_str(spec::data_layout().bench_binary.string());
   app->add_option("--accuracy", o->accuracy, "A report.json whose certificates give each op's accuracy");
   return {app, [o] { return run(*o); }};
 }

@@ -2,6 +2,10 @@
 //  [--seed S] [--cases N] --out DIR`: certifies one implementation (every table of it, or the
 // one of the chosen scalar type), each clause in its own child process, and writes the report.
 // Exit 0 when every claimed clause passes (PASS or QUALITY_WARNING), 1 otherwise, 2 on usage.
+// With --require-level L (repeatable) or --require-claimed-levels, the exit code asks only that
+// those levels are met (LEVEL-1: met or met with warnings) by every table certified: the gate a
+// library's own CI runs (rotorcert_add_certification() in cmake/RotorcertCertification.cmake).
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -9,6 +13,7 @@
 #include <rotorcert/certify/certify.hpp>
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
+#include <rotorcert/certify/verdict.hpp>
 #include <rotorcert/registry.hpp>
 
 #include "certify_cli.hpp"
@@ -20,7 +25,42 @@ namespace {
 struct Args {
   CertifyCli common;
   std::string impl, plugin, scalar = "both";
+  std::vector<std::string> required_levels;
+  bool require_claimed_levels = false;
 };
+
+/// The levels a table must meet: those asked for, and its claimed ones with
+/// --require-claimed-levels.
+std::vector<std::string> required_levels(const Args& a, const certify::Certificate& c) {
+  std::vector<std::string> r = a.required_levels;
+  if (a.require_claimed_levels)
+    for (const std::string& l : c.table.claimed_levels)
+      if (std::find(r.begin(), r.end(), l) == r.end()) r.push_back(l);
+  return r;
+}
+
+/// Whether every table meets its required levels; says which does not, and why.
+bool required_levels_met(const Args& a, const std::vector<certify::Certificate>& certs) {
+  bool ok = true;
+  for (const certify::Certificate& c : certs) {
+    const std::vector<certify::LevelResult> levels = certify::level_results(c);
+    for (const std::string& level : required_levels(a, c)) {
+      const auto l = std::find_if(levels.begin(), levels.end(), [&](const certify::LevelResult& x) { return x.level == level; });
+      if (l != levels.end() && l->status != certify::LevelStatus::not_met) continue;
+      ok = false;
+      std::cerr << "rotorcert certify: " << c.table.name << " (" << c.table.scalar << "): required level " << level
+                << " not met";
+      if (l != levels.end()) {
+        std::cerr << "; not passing:";
+        for (const std::string& clause : l->not_pass) std::cerr << ' ' << clause;
+      } else {
+        std::cerr << " (not certified: see --level)";
+      }
+      std::cerr << '\n';
+    }
+  }
+  return ok;
+}
 
 int run(const Args& a) {
   const auto started = std::chrono::steady_clock::now();
@@ -53,8 +93,14 @@ int run(const Args& a) {
 
   const auto certs = certify::certify_targets(spec, targets, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const certify::json report =
+  certify::json report =
       certify::report_json(spec, "certify", certify::options_json(options), run_json(seconds, command_line(), options.jobs), certs);
+  if (!a.required_levels.empty() || a.require_claimed_levels) {
+    certify::json required = a.required_levels;
+    if (a.require_claimed_levels) required.push_back("claimed");
+    report["options"]["required_levels"] = required;
+    report["summary"]["exit_code"] = required_levels_met(a, certs) ? 0 : 1;
+  }
   if (!a.common.quiet)
     for (const certify::Certificate& c : certs) certify::print_certificate(std::cout, c, a.common.verbose);
   try {
@@ -79,6 +125,11 @@ Command add_certify(CLI::App& parent) {
   app->add_option("--scalar", args->scalar, "Which table: float, double or both")
       ->check(CLI::IsMember({"float", "double", "both"}))
       ->capture_default_str();
+  app->add_option("--require-level", args->required_levels,
+                  "Exit 0 only if every table meets this level (met or met with warnings); repeatable")
+      ->check(CLI::IsMember({"Core", "Interp", "Blend", "Rigid", "Skinning", "Robust"}));
+  app->add_flag("--require-claimed-levels", args->require_claimed_levels,
+                "Exit 0 only if every table meets every level it claims");
   add_certify_options(*app, args->common);
   app->callback([app, impl, plugin] {
     if (impl->count() + plugin->count() != 1) throw CLI::RequiredError("exactly one of --impl or --plugin");

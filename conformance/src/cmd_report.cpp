@@ -18,17 +18,12 @@
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/render/render_check.hpp>
+#include <rotorcert/spec/data_layout.hpp>
 #include <rotorcert/report/speed.hpp>
 
 #include "certify_cli.hpp"
 #include "commands.hpp"
 
-#ifndef ROTORCERT_MUTANT_DIR
-#error "ROTORCERT_MUTANT_DIR must be defined by the build"
-#endif
-#ifndef ROTORCERT_MUTANTS_JSON
-#error "ROTORCERT_MUTANTS_JSON must be defined by the build"
-#endif
 
 namespace rotorcert::cli {
 namespace {
@@ -36,7 +31,7 @@ namespace {
 struct Args {
   CertifyCli common;
   std::vector<std::string> impls;
-  std::string mutant_dir = ROTORCERT_MUTANT_DIR;
+  std::string mutant_dir = spec::data_layout().mutant_plugin_dir.string();
   bool no_mutants = false;
   std::string render_dir;   // --render: the output directory of an earlier `rotorcert render`
   std::string render_file;  // --render-file: a glTF file instead of the built-in characters
@@ -148,7 +143,7 @@ int run(const Args& a) {
     if (!std::filesystem::is_directory(a.mutant_dir)) {
       mutants_note = "mutant plugins not found in " + a.mutant_dir + " (build the whole tree to include them)";
     } else {
-      for (const certify::json& entry : spec::read_json(ROTORCERT_MUTANTS_JSON)) {
+      for (const certify::json& entry : spec::read_json(spec::data_layout().mutants_json)) {
         // A mutant that breaks nothing is an acceptable convention (ACC-1; test_mutants checks
         // that it is graded ACCEPTABLE): there is nothing to kill.
         if (entry.at("breaks").empty()) continue;

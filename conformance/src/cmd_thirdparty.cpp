@@ -14,30 +14,24 @@
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/certify/verdict.hpp>
+#include <rotorcert/spec/data_layout.hpp>
 #include <rotorcert/thirdparty/thirdparty.hpp>
 
 #include "certify_cli.hpp"
 #include "commands.hpp"
 
-#ifndef ROTORCERT_ADAPTERS_DIR
-#error "ROTORCERT_ADAPTERS_DIR must be defined by the build"
-#endif
-#ifndef ROTORCERT_ADAPTERS_ENV
-#error "ROTORCERT_ADAPTERS_ENV must be defined by the build"
-#endif
-#ifndef ROTORCERT_ADAPTER_PLUGIN_DIR
-#error "ROTORCERT_ADAPTER_PLUGIN_DIR must be defined by the build"
-#endif
 
 namespace rotorcert::cli {
 
 std::string default_adapters_env() {
   const char* env = std::getenv("ROTORCERT_ADAPTERS_ENV");
-  return env != nullptr && *env != '\0' ? env : ROTORCERT_ADAPTERS_ENV;
+  return env != nullptr && *env != '\0' ? env : spec::data_layout().adapters_env.string();
 }
 
 ThirdPartyRequest::ThirdPartyRequest()
-    : adapters_dir(ROTORCERT_ADAPTERS_DIR), env_dir(default_adapters_env()), plugin_dir(ROTORCERT_ADAPTER_PLUGIN_DIR) {}
+    : adapters_dir(spec::data_layout().adapters_dir.string()),
+      env_dir(default_adapters_env()),
+      plugin_dir(spec::data_layout().adapter_plugin_dir.string()) {}
 
 int run_third_party(const ThirdPartyRequest& r, const spec::Spec& spec, const certify::CertifyOptions& options,
                     const thirdparty::KnownCertificates& known, const char* who, thirdparty::Outcome& outcome,

@@ -191,7 +191,7 @@ Command add_vectors(CLI::App& parent) {
   auto a = std::make_shared<Args>();
   CLI::App* app = parent.add_subcommand("vectors", "Test vectors for any language: export them, check a results file");
   app->require_subcommand(1);
-  app->add_option("--spec", a->spec_dir, "Spec directory (default: $ROTORCERT_SPEC_DIR, else the source tree's spec/)")
+  app->add_option("--spec", a->spec_dir, "Spec directory (default: $ROTORCERT_SPEC_DIR, else the tool's own spec/)")
       ->check(CLI::ExistingDirectory)
       ->option_text("DIR");
 

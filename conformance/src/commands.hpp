@@ -38,6 +38,9 @@ Command add_certify(CLI::App& parent);
 /// `rotorcert report --out DIR ...` (cmd_report.cpp).
 Command add_report(CLI::App& parent);
 
+/// `rotorcert diff OLD/report.json NEW/report.json [--json]` (cmd_diff.cpp).
+Command add_diff(CLI::App& parent);
+
 /// `rotorcert vectors export --out DIR` and `rotorcert vectors check FILE` (cmd_vectors.cpp).
 Command add_vectors(CLI::App& parent);
 

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   // One line per subcommand.
   const std::vector<Command> commands = {
       add_report(app), add_certify(app), add_vectors(app), add_list(app), add_selfcheck(app), add_render(app),
-      add_bench(app), add_thirdparty(app),
+      add_bench(app), add_thirdparty(app), add_diff(app),
   };
 
   try {

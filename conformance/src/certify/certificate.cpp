@@ -2,11 +2,8 @@
 
 #include <filesystem>
 
+#include <rotorcert/spec/data_layout.hpp>
 #include <rotorcert/spec/spec.hpp>
-
-#ifndef ROTORCERT_SOURCE_DIR
-#error "ROTORCERT_SOURCE_DIR must be defined by the build"
-#endif
 
 namespace rotorcert::certify {
 namespace {
@@ -45,14 +42,14 @@ std::map<std::string, std::string> read_expected_failures(const std::filesystem:
 }
 
 std::filesystem::path builtin_expected_failures_file(const std::string& impl_name) {
-  return std::filesystem::path(ROTORCERT_SOURCE_DIR) / "impls" / impl_name / "expected_failures.json";
+  return spec::data_layout().impls_dir / impl_name / "expected_failures.json";
 }
 
 std::map<std::string, std::string> expected_failures(const std::string& impl_name, const std::string& scalar) {
   // The file sits in the directory of the implementation that provides the table; a directory
   // may provide several tables (glm_quat also provides glm_mix), so every file is read.
   std::map<std::string, std::string> result;
-  const std::filesystem::path impls = std::filesystem::path(ROTORCERT_SOURCE_DIR) / "impls";
+  const std::filesystem::path impls = spec::data_layout().impls_dir;
   std::error_code ec;
   for (const auto& dir : std::filesystem::directory_iterator(impls, ec))
     for (auto& [clause, why] : read_expected_failures(dir.path() / "expected_failures.json", impl_name, scalar))

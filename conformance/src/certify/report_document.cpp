@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <stdexcept>
 
 #include <rotorcert/certify/atomic_file.hpp>
 #include <rotorcert/certify/platform.hpp>
@@ -87,6 +88,45 @@ json certificate_json(const Certificate& c) {
     conventions.push_back({{"id", f.id}, {"description", f.description}, {"clauses", f.clauses}});
   j["conventions"] = conventions;
   return j;
+}
+
+Certificate certificate_from_json(const json& j) {
+  try {
+    Certificate c;
+    c.table.name = j.at("name");
+    c.table.scalar = j.at("scalar");
+    c.table.version = j.value("version", "");
+    c.table.description = j.value("description", "");
+    c.table.source = j.value("source", "");
+    if (const auto p = j.find("plugin_path"); p != j.end() && p->is_string()) c.table.plugin_path = *p;
+    c.table.claimed_levels = j.value("claimed_levels", std::vector<std::string>{});
+    c.table.declared_preconditions = j.value("declared_preconditions", std::vector<std::string>{});
+    c.table.declared_conventions = j.value("declared_conventions", std::vector<std::string>{});
+    if (const auto e = j.find("error"); e != j.end() && e->is_string()) c.error = *e;
+    c.fp_environment = j.value("fp_environment", json());
+    for (const json& l : j.at("levels")) c.levels.push_back(l.at("level"));
+    for (const json& f : j.value("expected_failures", json::array())) c.expected_failures[f.at("clause")] = f.at("why");
+    for (const json& r : j.at("clauses")) {
+      c.clauses.push_back(clause_result_from_json(r));
+      if (r.value("claimed", false)) c.table.claimed_clauses.push_back(c.clauses.back().clause);
+      if (const auto rp = r.find("reproduce"); rp != r.end() && rp->is_string() && !rp->get<std::string>().empty())
+        c.reproduce[c.clauses.back().clause] = *rp;
+    }
+    return c;
+  } catch (const json::exception& e) {
+    throw std::runtime_error("a certificate" + (j.contains("name") ? " (" + j["name"].dump() + ")" : std::string()) +
+                             " does not have the report.json form: " + e.what());
+  }
+}
+
+std::vector<Certificate> certificates_of_report(const json& report) {
+  std::vector<Certificate> all;
+  for (const json& c : report.at("implementations")) all.push_back(certificate_from_json(c));
+  if (const auto s = report.find("sections"); s != report.end() && s->is_object())
+    if (const auto tp = s->find("third_party"); tp != s->end() && tp->contains("libraries"))
+      for (const json& lib : tp->at("libraries"))
+        for (const json& c : lib.value("certificates", json::array())) all.push_back(certificate_from_json(c));
+  return all;
 }
 
 bool report_ok(const std::string& kind, const std::vector<Certificate>& certificates) {

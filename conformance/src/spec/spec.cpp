@@ -1,5 +1,7 @@
 #include <rotorcert/spec/spec.hpp>
 
+#include <rotorcert/spec/data_layout.hpp>
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -8,10 +10,6 @@
 #include <sstream>
 
 #include <rotorcert/spec/expr.hpp>
-
-#ifndef ROTORCERT_SPEC_DIR
-#error "ROTORCERT_SPEC_DIR must be defined by the build (the source tree's spec/ directory)"
-#endif
 
 namespace rotorcert::spec {
 
@@ -108,7 +106,7 @@ const ToleranceClass& Spec::lookup(const std::string& name) const {
   return it->second;
 }
 
-std::filesystem::path default_spec_dir() { return std::filesystem::path(ROTORCERT_SPEC_DIR); }
+std::filesystem::path default_spec_dir() { return data_layout().spec_dir; }
 
 std::filesystem::path resolve_spec_dir(const std::optional<std::filesystem::path>& option) {
   if (option) return *option;

@@ -17,6 +17,16 @@ namespace rotorcert::certify {
 /// One certificate in the report.json format.
 json certificate_json(const Certificate& c);
 
+/// A certificate read back from report.json (where data enters: `rotorcert diff`): the table, the
+/// levels certified, the clause results (their summaries: report.json keeps no error lists), the
+/// known defects and the reproduce commands. Throws std::runtime_error naming the field that is
+/// missing or malformed.
+Certificate certificate_from_json(const json& j);
+
+/// Every certificate of a report.json document: its implementations, then those of its
+/// third-party section.
+std::vector<Certificate> certificates_of_report(const json& report);
+
 /// What a report's exit code asks of its certificates: `report` and `third-party` runs ask that
 /// every table is as expected (known defects FAIL, the rest passes), `certify`, `vectors-check`
 /// and `bench` that every claimed clause passes.

@@ -84,7 +84,8 @@ struct Spec {
   std::filesystem::path pending_file() const { return dir / "pending.json"; }
 };
 
-/// The compiled-in spec directory (the source tree's spec/).
+/// The tool's spec directory: the installed share/rotorcert/spec, else the source tree's spec/
+/// (data_layout.hpp).
 std::filesystem::path default_spec_dir();
 
 /// `option` if given, else $ROTORCERT_SPEC_DIR if set and nonempty, else default_spec_dir().
