@@ -33,6 +33,11 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/impls/ DESTINATION share/rotorcert/impls
 install(FILES ${PROJECT_SOURCE_DIR}/conformance/mutants/mutants.json DESTINATION share/rotorcert/mutants COMPONENT tool)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/conformance/adapters/ DESTINATION share/rotorcert/adapters COMPONENT tool
   PATTERN "CMakeLists.txt" EXCLUDE PATTERN "*.cmake" EXCLUDE PATTERN "__pycache__" EXCLUDE PATTERN "node_modules" EXCLUDE)
+# The Python and JavaScript packages a library's own test suite certifies with (pytest plugin,
+# node:test helper): `pip install PREFIX/share/rotorcert/packages/python`, `npm install .../node`.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/conformance/packages/python ${PROJECT_SOURCE_DIR}/conformance/packages/node
+  DESTINATION share/rotorcert/packages COMPONENT tool
+  PATTERN "__pycache__" EXCLUDE PATTERN "node_modules" EXCLUDE PATTERN ".pytest_cache" EXCLUDE PATTERN "*.egg-info" EXCLUDE)
 
 # The CMake package.
 install(EXPORT rotorcertTargets NAMESPACE rotorcert:: DESTINATION ${ROTORCERT_INSTALL_CMAKEDIR} COMPONENT tool)

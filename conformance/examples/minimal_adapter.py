@@ -2,9 +2,10 @@
 """A complete JSON-vectors adapter: the worked example of conformance/CERTIFY.md.
 
 "Your library" here is two functions written with Python floats; replace them with calls into the
-library you certify. conformance/adapters/common/rcvectors.py does the rest: reads the vectors
-exactly (hexfloat), calls one function per vector, maps exceptions and all-NaN outputs to
-DOMAIN_ERROR, declares every other operation unsupported and writes the results file.
+library you certify. The rotorcert_vectors package (conformance/packages/python; `pip install` it,
+or this script finds it in the checkout) does the rest: reads the vectors exactly (hexfloat), calls
+one function per vector, maps exceptions and all-NaN outputs to DOMAIN_ERROR (RESULT-2), declares
+every other operation unsupported and writes the results file.
 
     rotorcert vectors export --out vectors --scalar double
     python3 minimal_adapter.py --vectors vectors --out results.json
@@ -14,8 +15,11 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "adapters", "common"))
-import rcvectors  # noqa: E402
+try:
+    import rotorcert_vectors
+except ImportError:  # not installed: the package of this checkout
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "packages", "python", "src"))
+    import rotorcert_vectors
 
 
 def normalize(q):  # NORM-1: q / |q|, scaled first so that |q|^2 cannot overflow or underflow
@@ -37,8 +41,7 @@ def compose(a, b):  # COMPOSE-1: the Hamilton product a b of [x, y, z, w] quater
 
 
 if __name__ == "__main__":
-    sys.exit(rcvectors.run_adapter(
-        description=__doc__.splitlines()[0],
-        implementation={"name": "minimal_py", "version": "1.0", "scalar": "double",
-                        "description": "CERTIFY.md's worked example: normalize and compose in Python"},
-        ops={"normalize": normalize, "compose": compose}))
+    sys.exit(rotorcert_vectors.run_adapter(__doc__.splitlines()[0], rotorcert_vectors.Implementation(
+        name="minimal_py", version="1.0", scalar="double",
+        description="CERTIFY.md's worked example: normalize and compose in Python",
+        ops={"normalize": normalize, "compose": compose})))

@@ -37,24 +37,28 @@ Op mapping (every call is clifford's; A, B, R rotors as above):
   slerp            clifford.tools.g3c.rotor_parameterisation.interpolate_rotors(Rb, Ra, t), with
                    Ra, Rb = clifford.tools.g3.quaternion_to_rotor(...) in clifford's conformal layout
                    (the library's only rotor interpolation: exp(t log(Rb ~Ra)) Ra)
-  log_exp_round_trip   exp of what log returned (rcvectors.round_trip)
+  log_exp_round_trip   exp of what log returned (rotorcert_vectors.round_trip)
 Unsupported (no clifford function, and no one-line idiom of its calls): to_axis_angle, nlerp,
 blend_qlb, blend_log (a hemisphere rule or a zero-angle default axis would be adapter code), and
 every rigid/skinning op (clifford.pga is a bare Cl(3,0,1) layout without translators, motor
 log/exp or blending). adapter.json lists each with its reason.
 
-Status (RESULT-2, the rule of rcvectors.py): a clifford exception -> DOMAIN_ERROR with NaN
-outputs; all outputs NaN -> DOMAIN_ERROR; anything else -> OK with the outputs as computed.
+Status (RESULT-2, the rule of the rotorcert_vectors package, conformance/packages/python): a
+clifford exception -> DOMAIN_ERROR with NaN outputs; all outputs NaN -> DOMAIN_ERROR; anything else
+-> OK with the outputs as computed. Reading the vectors, calling the ops and writing the results
+file are the package's (scripts/setup-adapters installs it into the adapter's environment).
 Two details of how a library failure reaches that rule:
   - An exception whose innermost frame is inside the clifford package is the library's, whatever
     its type: clifford.tools.log_rotor raises NameError ('log' is not imported) for every rotor
-    with |<R>2| < 1e-12. It is re-raised as CliffordRaised so that rcvectors (which treats a bare
-    NameError as an adapter defect) grades it as a refusal like any other library exception.
+    with |<R>2| < 1e-12. It is re-raised as CliffordRaised so that rotorcert_vectors (which treats
+    a bare NameError as an adapter defect) grades it as a refusal like any other library exception.
+    A NameError (or AttributeError, ImportError, KeyError) raised in this file is an adapter defect:
+    rotorcert_vectors.AdapterError, which stops the run.
   - clifford's Taylor exp (taylor_expansions.exp, numba) never returns for a multivector with a
     non-finite or >= 2^63 coefficient (int() of it overflows, and the scaling loop shifts a negative
     number forever). Calls that can reach it (exp, from_axis_angle, slerp, the round trip) run in a
     forked child with a CPU-time limit (HANG_CPU_S); a child killed by it raises
-    rcvectors.DidNotReturn, which rcvectors reports with raw status byte 255 (a FAIL,
+    rotorcert_vectors.DidNotReturn, which is reported with raw status byte 255 (a FAIL,
     conformance/VECTORS.md): a call that does not return is neither OK nor a DOMAIN_ERROR.
 """
 import os
@@ -65,17 +69,13 @@ import sys
 import traceback
 import warnings
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "common"))
-import rcvectors  # noqa: E402
-from rcvectors import run_adapter, round_trip  # noqa: E402
-
-import numba.core.event  # noqa: E402
-import numpy as np  # noqa: E402
-import clifford  # noqa: E402
-import clifford.tools  # noqa: E402
-import clifford.tools.g3  # noqa: E402  (imports clifford.g3c: its layout is the conformal Cl(4,1))
-import clifford.tools.g3c.rotor_parameterisation as rotor_param  # noqa: E402
+import numba.core.event
+import numpy as np
+import clifford
+import clifford.tools
+import clifford.tools.g3  # imports clifford.g3c: its layout is the conformal Cl(4,1)
+import clifford.tools.g3c.rotor_parameterisation as rotor_param
+from rotorcert_vectors import AdapterError, DidNotReturn, round_trip, run_adapter
 
 # numpy's warnings (0/0, overflow) and clifford's DeprecationWarning of general_exp (called inside
 # interpolate_rotors) only print; silencing them changes no value.
@@ -224,7 +224,7 @@ def isolated(fn):
             except CliffordRaised:
                 raise
             except (NameError, AttributeError, ImportError, KeyError) as e:
-                raise RuntimeError("adapter defect in %s: %s: %s" % (fn.__name__, type(e).__name__, e)) from e
+                raise AdapterError("adapter defect in %s: %s: %s" % (fn.__name__, type(e).__name__, e)) from e
             except Exception as e:  # noqa: B902 - the library raised: its outcome (DOMAIN_ERROR rule)
                 raise CliffordRaised("%s: %s" % (type(e).__name__, e)) from e
         r, w = os.pipe()
@@ -254,8 +254,8 @@ def isolated(fn):
         _, st = os.waitpid(pid, 0)
         if os.WIFSIGNALED(st):
             HUNG.append(fn.__name__)
-            raise rcvectors.DidNotReturn("%s did not return within %.1f s CPU (signal %d)"
-                                   % (fn.__name__, HANG_CPU_S, os.WTERMSIG(st)))
+            raise DidNotReturn("%s did not return within %.1f s CPU (signal %d)"
+                               % (fn.__name__, HANG_CPU_S, os.WTERMSIG(st)))
         compiled, msg = pickle.loads(b"".join(chunks))
         if compiled:  # it returned in the child, so it returns here
             try:
@@ -267,7 +267,7 @@ def isolated(fn):
         _, name, text, is_library = msg
         if is_library:
             raise CliffordRaised("%s: %s" % (name, text))
-        raise RuntimeError("adapter defect in %s: %s: %s" % (fn.__name__, name, text))
+        raise AdapterError("adapter defect in %s: %s: %s" % (fn.__name__, name, text))
     call.__name__ = fn.__name__
     call.inner = fn  # for warm_up, which must run it in this process
     return call
@@ -380,7 +380,7 @@ IMPLEMENTATION = {
         "clifford %s (pygae, Python) in Cl(3,0), binary64: geometric product, reverse sandwich, "
         "normal(), inv(), tools.log_rotor, MultiVector.exp, tools.g3 matrix conversions, "
         "tools.g3c interpolate_rotors; R = w - x e23 - y e31 - z e12 with e31 = -e13. Status rule "
-        "(rcvectors.py): a clifford exception -> DOMAIN_ERROR with NaN outputs, all outputs NaN -> "
+        "(rotorcert_vectors): a clifford exception -> DOMAIN_ERROR with NaN outputs, all outputs NaN -> "
         "DOMAIN_ERROR, else OK as computed; a call that never returns (Taylor exp of a non-finite or "
         "huge bivector) -> raw status 255 (FAIL)." % clifford.__version__),
 }

@@ -2,9 +2,10 @@
 /* rotorcert vectors adapter for ganja.js (https://github.com/enkimute/ganja.js), pinned 1.0.204.
  *
  *   node ganja_adapter.js --vectors DIR --out RESULTS.json     run every binary64 vector of the mapped ops
- *   node ganja_adapter.js --self-test                          check the hexfloat reader/printer
+ *   node ganja_adapter.js --self-test                          check the package's hexfloat reader/printer
  *
- * ganja.js is found by plain require('ganja.js') (NODE_PATH or a node_modules next to this file).
+ * ganja.js and rotorcert-vectors are found by plain require() (NODE_PATH or a node_modules next to
+ * this file).
  * It runs through ganja's object API, never the inline translator:
  *   C3  = Algebra({p: 3, baseType: Float64Array})        Cl(3,0): rotors (rotation ops)
  *   PGA = Algebra({p: 3, r: 1, baseType: Float64Array})  Cl(3,0,1): motors (dual-quaternion ops)
@@ -46,82 +47,18 @@
  * no domain checks, no rescaling of our own: slerp, nlerp, blends and ScLERP need an adapter-written
  * hemisphere rule and are declared unsupported (adapter.json says why for every op).
  *
- * Status (RESULT-2, the rules of conformance/adapters/common/rcvectors.py): ganja has no status
- * channel; an exception thrown by ganja -> DOMAIN_ERROR with every output NaN; every output
- * component NaN -> DOMAIN_ERROR; anything else -> OK with the outputs as computed. A ReferenceError
- * or TypeError is a defect of this adapter and stops the run.
+ * Status (RESULT-2, the rule of the rotorcert-vectors package, conformance/packages/node/lib/outcome.js,
+ * the same as the Python adapters'): ganja has no status channel; an exception thrown by ganja ->
+ * DOMAIN_ERROR with every output NaN; every output component NaN -> DOMAIN_ERROR; anything else ->
+ * OK with the outputs as computed. A ReferenceError or TypeError is a defect of this adapter and
+ * stops the run.
  *
- * Numbers: inputs are read from the vectors' "hex" strings with an exact hexfloat parser (BigInt,
- * round to nearest even) and written back as Python's float.hex() writes them, so the results file
- * is the same, byte for byte, as the shared Python runner would write for the same values.
+ * Reading the vectors (exact hexfloat parser), calling the ops and writing the results file are the
+ * package's (require('rotorcert-vectors'), installed beside ganja.js by scripts/setup-adapters).
  */
 'use strict';
 
-const fs = require('fs');
-const path = require('path');
-
-// ---- hexfloat <-> binary64, exact -------------------------------------------------------------
-
-const scratch = new DataView(new ArrayBuffer(8));
-const MANT_MASK = (1n << 52n) - 1n;
-
-function bitsOf(x) { scratch.setFloat64(0, x); return scratch.getBigUint64(0); }
-function fromBits(b) { scratch.setBigUint64(0, b); return scratch.getFloat64(0); }
-
-/** A finite binary64, NaN or infinity as rcvectors.hexfloat writes it (Python float.hex()):
- *  0x1.<13 hex digits>p<exp> for normal numbers, 0x0.<13>p-1022 for subnormals, 0x0.0p+0 for zero. */
-function hexfloat(x) {
-  if (Number.isNaN(x)) return 'nan';
-  if (x === Infinity) return 'inf';
-  if (x === -Infinity) return '-inf';
-  const b = bitsOf(x);
-  const sign = b >> 63n ? '-' : '';
-  const field = Number((b >> 52n) & 0x7ffn), mant = b & MANT_MASK;
-  if (field === 0 && mant === 0n) return sign + '0x0.0p+0';
-  const digits = mant.toString(16).padStart(13, '0');
-  if (field === 0) return sign + '0x0.' + digits + 'p-1022';
-  const e = field - 1023;
-  return sign + '0x1.' + digits + 'p' + (e < 0 ? '-' : '+') + Math.abs(e);
-}
-
-const HEX_RE = /^([+-]?)(?:0[xX])?([0-9a-fA-F]*)(?:\.([0-9a-fA-F]*))?(?:[pP]([+-]?[0-9]+))?$/;
-
-/** The binary64 nearest (ties to even) to a C99 / Python hexfloat string: sign, hex digits with an
- *  optional point, optional binary exponent. Exact: the significand is a BigInt. */
-function parseHexfloat(s) {
-  const m = HEX_RE.exec(s.trim());
-  if (!m || (m[2] + (m[3] || '')).length === 0) throw new Error('not a hexfloat: ' + JSON.stringify(s));
-  const neg = m[1] === '-', frac = m[3] || '';
-  const sig = BigInt('0x' + m[2] + frac);          // value = sig * 2^e
-  const e = (m[4] ? parseInt(m[4], 10) : 0) - 4 * frac.length;
-  const signed = (x) => (neg ? -x : x);
-  if (sig === 0n) return signed(0);
-  const top = sig.toString(2).length - 1 + e;      // floor(log2 value)
-  if (top > 1023) return signed(Infinity);
-  if (top < -1076) return signed(0);               // below half the smallest subnormal
-  const lsb = Math.max(top - 52, -1074);           // exponent of the last significand bit kept
-  const shift = e - lsb;
-  let q;
-  if (shift >= 0) {
-    q = sig << BigInt(shift);
-  } else {
-    const drop = BigInt(-shift), rest = sig & ((1n << drop) - 1n), half = 1n << (drop - 1n);
-    q = sig >> drop;
-    if (rest > half || (rest === half && (q & 1n))) q += 1n;
-  }
-  // value = q 2^lsb with q < 2^53: these bits are the biased encoding, including the carry of a
-  // rounding into the next binade and the subnormal range (lsb = -1074).
-  const bits = (BigInt(lsb + 1074) << 52n) + q;
-  if (bits >= 0x7ffn << 52n) return signed(Infinity);
-  return signed(fromBits(bits));
-}
-
-function decodeValue(h) {
-  if (h === 'nan' || h === '-nan') return NaN;
-  if (h === 'inf') return Infinity;
-  if (h === '-inf') return -Infinity;
-  return parseHexfloat(h);
-}
+const rcv = require('rotorcert-vectors');
 
 // ---- ganja ----------------------------------------------------------------------------------
 
@@ -191,118 +128,6 @@ const OPS = {
   dq_normalize: (d) => dualQuat(motor(d).Normalized),
 };
 
-// ---- vectors and results (the rules of conformance/adapters/common/rcvectors.py) ----------------
-
-// Output arrays of each ABI op, in the order the op writes them, and their strides (impl_abi.h).
-const OUTPUTS = {
-  normalize: [['out_q', 4]], compose: [['out_q', 4]], inverse: [['out_q', 4]],
-  apply_vector: [['out_v', 3]], apply_bivector: [['out_b', 3]], apply_trivector: [['out_s', 1]],
-  to_matrix: [['out_m', 9]], from_matrix: [['out_q', 4]],
-  to_axis_angle: [['out_angle', 1], ['out_axis', 3]], from_axis_angle: [['out_q', 4]],
-  log: [['out_v', 3]], exp: [['out_q', 4]], slerp: [['out_q', 4]], nlerp: [['out_q', 4]],
-  blend_qlb: [['out_q', 4]], blend_log: [['out_q', 4]],
-  dq_from_rotation_translation: [['out_d', 8]], dq_compose: [['out_d', 8]],
-  dq_apply_point: [['out_p', 3]], dq_normalize: [['out_d', 8]], dq_sclerp: [['out_d', 8]],
-  dq_blend: [['out_d', 8]], rotate_about_axis: [['out_p', 3]],
-  skin_linear: [['out_v', 3]], skin_dual_quaternion: [['out_v', 3]],
-  log_exp_round_trip: [['out_q', 4]],
-};
-
-/** EXP-2: exp of what log returned; DOMAIN_ERROR (a thrown error) when log's output is all NaN. */
-function roundTrip(log, exp) {
-  return (q) => {
-    const v = log(q);
-    if (v.every((c) => Number.isNaN(c))) throw new RangeError('log refused the input');
-    return exp(v);
-  };
-}
-
-function decode(arr, stride, perInfluence, k) {
-  const values = arr.hex.map(decodeValue);
-  if (perInfluence) {
-    const out = [];
-    for (let i = 0; i < k; i++) out.push(stride > 1 ? values.slice(i * stride, (i + 1) * stride) : values[i]);
-    return out;
-  }
-  return stride > 1 ? values : values[0];
-}
-
-function flatten(v) {
-  if (typeof v === 'number') return [v];
-  return Array.from(v, Number);
-}
-
-/** [status, {output name: numbers}, why] of one call under the status rule. */
-function call(op, fn, inputs) {
-  const outs = OUTPUTS[op];
-  let arrays;
-  try {
-    let result = fn(...inputs);
-    if (outs.length === 1) result = [result];
-    arrays = {};
-    outs.forEach(([name, stride], i) => {
-      arrays[name] = flatten(result[i]);
-      if (arrays[name].length !== stride)
-        throw new RangeError(`${name}: ${arrays[name].length} values, expected ${stride}`);
-    });
-  } catch (e) {
-    if (e instanceof ReferenceError || e instanceof TypeError) throw e;  // the adapter's defect
-    const nan = {};
-    for (const [name, stride] of outs) nan[name] = new Array(stride).fill(NaN);
-    return ['DOMAIN_ERROR', nan, e.constructor.name];
-  }
-  const all = Object.values(arrays).flat();
-  if (all.every((x) => Number.isNaN(x))) return ['DOMAIN_ERROR', arrays, null];
-  return ['OK', arrays, null];
-}
-
-function runVectors(vectorsDir, ops, numberFormat) {
-  const index = JSON.parse(fs.readFileSync(path.join(vectorsDir, 'index.json'), 'utf8'));
-  const results = [], refused = {};
-  for (const entry of index.files) {
-    if (entry.number_format !== numberFormat || !(entry.op in ops)) continue;
-    const vf = JSON.parse(fs.readFileSync(path.join(vectorsDir, entry.file), 'utf8'));
-    const fn = ops[vf.op];
-    const layout = vf.inputs.map((a) => [a.name, a.stride, Boolean(a.per_influence)]);
-    for (const test of vf.tests) {
-      const inputs = layout.map(([name, stride, per]) => decode(test.in[name], stride, per, test.k));
-      const [status, out, why] = call(vf.op, fn, inputs);
-      if (why) refused[vf.op] = (refused[vf.op] || 0) + 1;
-      const hexOut = {};
-      for (const [name, values] of Object.entries(out)) hexOut[name] = values.map(hexfloat);
-      results.push({id: test.id, status, out: hexOut});
-    }
-  }
-  return [results, refused];
-}
-
-/** JSON as Python's json.dumps writes it without indent (", " and ": "), for one result per line. */
-function pyJson(v) {
-  if (Array.isArray(v)) return '[' + v.map(pyJson).join(', ') + ']';
-  if (v !== null && typeof v === 'object')
-    return '{' + Object.keys(v).map((k) => JSON.stringify(k) + ': ' + pyJson(v[k])).join(', ') + '}';
-  return JSON.stringify(v);
-}
-
-/** The results file (format rotorcert-results 1), written atomically, one result per line. */
-function writeResults(file, vectorsDir, implementation, results, unsupported) {
-  const outDir = path.dirname(path.resolve(file));
-  const head = {
-    format: 'rotorcert-results',
-    format_version: 1,
-    implementation,
-    vectors: path.relative(outDir, path.resolve(vectorsDir)) || '.',
-    unsupported_ops: [...unsupported].sort(),
-    results: null,
-  };
-  let text = JSON.stringify(head, null, 2);
-  const body = results.map(pyJson).join(',\n    ');
-  text = text.replace('"results": null', results.length ? '"results": [\n    ' + body + '\n  ]' : '"results": []');
-  const tmp = file + '.tmp';
-  fs.writeFileSync(tmp, text + '\n');
-  fs.renameSync(tmp, file);
-}
-
 const IMPLEMENTATION = {
   name: 'ganja',
   version: GANJA_VERSION,
@@ -314,99 +139,22 @@ const IMPLEMENTATION = {
     'outputs, every output NaN -> DOMAIN_ERROR (RESULT-2, ganja has no status channel), otherwise OK',
 };
 
-// ---- self-test of the number conversions ----------------------------------------------------
-
-function selfTest() {
-  let failures = 0;
-  const same = (a, b) => bitsOf(a) === bitsOf(b) || (Number.isNaN(a) && Number.isNaN(b));
-  const expect = (what, got, want) => {
-    const ok = typeof want === 'number' ? same(got, want) : got === want;
-    if (!ok) { failures++; console.log(`FAIL ${what}: got ${String(got)} (${typeof got === 'number' ? hexfloat(got) : ''}), want ${String(want)}`); }
-  };
-  const MIN_SUB = fromBits(1n), MAX_SUB = fromBits((1n << 52n) - 1n), MIN_NORM = fromBits(1n << 52n);
-  // Printer: Python float.hex() spellings.
-  expect('hex 1', hexfloat(1), '0x1.0000000000000p+0');
-  expect('hex -0', hexfloat(-0), '-0x0.0p+0');
-  expect('hex +0', hexfloat(0), '0x0.0p+0');
-  expect('hex min subnormal', hexfloat(MIN_SUB), '0x0.0000000000001p-1022');
-  expect('hex max subnormal', hexfloat(MAX_SUB), '0x0.fffffffffffffp-1022');
-  expect('hex min normal', hexfloat(MIN_NORM), '0x1.0000000000000p-1022');
-  expect('hex max', hexfloat(Number.MAX_VALUE), '0x1.fffffffffffffp+1023');
-  expect('hex 0.1', hexfloat(0.1), '0x1.999999999999ap-4');
-  expect('hex -pi', hexfloat(-Math.PI), '-0x1.921fb54442d18p+1');
-  expect('hex nan/inf', [NaN, Infinity, -Infinity].map(hexfloat).join(' '), 'nan inf -inf');
-  // Parser: C99 %a spellings of the exporter, Python spellings, and rounding to nearest even.
-  const cases = [
-    ['0x0p+0', 0], ['-0x0p+0', -0], ['0x1p+0', 1], ['-0x1.8p+1', -3], ['0x1p-1074', MIN_SUB],
-    ['-0x1p-1074', -MIN_SUB], ['0x0.0000000000001p-1022', MIN_SUB], ['0x1.ffffffffffffep-1023', MAX_SUB],
-    ['0x1p-1022', MIN_NORM], ['0x1.fffffffffffffp+1023', Number.MAX_VALUE], ['0x1p+1023', 2 ** 1023],
-    ['0x1p+1024', Infinity], ['-0x1p+1024', -Infinity], ['0x1.fffffffffffff8p+1023', Infinity],
-    ['0x1.fffffffffffff7p+1023', Number.MAX_VALUE],
-    ['0x1.00000000000008p+0', 1], ['0x1.00000000000018p+0', 1 + 2 ** -51],
-    ['0x1.000000000000080001p+0', 1 + 2 ** -52], ['0x1.00000000000007ffp+0', 1],
-    ['0x0.8p-1074', 0], ['0x0.8000001p-1074', MIN_SUB], ['0x1.8p-1074', 2 * MIN_SUB], ['0x1p-1076', 0],
-    ['0x1.fffffffffffff8p-1023', MIN_NORM], ['0x3p-1075', 2 * MIN_SUB],
-    ['0x1.921fb54442d18p+1', Math.PI], ['0x.8p1', 1], ['0x10p-4', 1], ['1p0', 1],
-  ];
-  for (const [s, want] of cases) expect('parse ' + s, parseHexfloat(s), want);
-  for (const bad of ['', '0x', 'p3', '0x1q3', '0x1.2.3p0']) {
-    let threw = false;
-    try { parseHexfloat(bad); } catch (e) { threw = true; }
-    if (!threw) { failures++; console.log('FAIL parse accepted ' + JSON.stringify(bad)); }
-  }
-  // Round trip of every kind of bit pattern: parse(hex(x)) is x, bit for bit (-0 included).
-  const special = [0, -0, 1, -1, MIN_SUB, -MIN_SUB, MAX_SUB, MIN_NORM, Number.MAX_VALUE, -Number.MAX_VALUE,
-                   2 ** 1023, 2 ** -1023, 3 * MIN_SUB, 0.1, Math.PI, 1e300, -(2 ** -1060)];
-  let seed = 0x9e3779b97f4a7c15n;
-  const next = () => { seed ^= seed << 13n; seed &= (1n << 64n) - 1n; seed ^= seed >> 7n; seed ^= seed << 17n; seed &= (1n << 64n) - 1n; return seed; };
-  const pool = special.slice();
-  for (let i = 0; i < 20000; i++) {
-    let b = next();
-    if (i % 4 === 1) b &= (1n << 63n) | MANT_MASK;            // subnormals and zeros
-    if (i % 4 === 2) b |= 0x7fen << 52n;                      // huge
-    const x = fromBits(b);
-    if (Number.isFinite(x)) pool.push(x);
-  }
-  let roundTrips = 0;
-  for (const x of pool) {
-    const y = parseHexfloat(hexfloat(x));
-    if (!same(x, y)) { failures++; if (failures < 20) console.log(`FAIL round trip ${hexfloat(x)} -> ${hexfloat(y)}`); }
-    roundTrips++;
-  }
-  console.log(`self-test: ${cases.length} parse cases, ${roundTrips} round trips, ${failures} failures`);
-  return failures ? 1 : 0;
-}
-
 // ---- command line -----------------------------------------------------------------------------
 
-function usage(msg) {
-  if (msg) console.error('ganja_adapter.js: ' + msg);
-  console.error('usage: node ganja_adapter.js --vectors DIR --out RESULTS.json | --self-test');
-  return 2;
+function selfTest() {
+  const report = rcv.checkHexfloat();
+  for (const f of report.failures.slice(0, 20)) console.log('FAIL ' + f);
+  console.log(`self-test: ${report.parseCases} parse cases, ${report.roundTrips} round trips, ${report.failures.length} failures`);
+  return report.failures.length ? 1 : 0;
 }
 
 function main(argv) {
-  const args = {};
-  for (let i = 0; i < argv.length; i++) {
-    const a = argv[i];
-    if (a === '--self-test') args.selfTest = true;
-    else if (a === '--vectors' || a === '--out') { if (i + 1 >= argv.length) return usage(a + ' needs a value'); args[a.slice(2)] = argv[++i]; }
-    else if (a.startsWith('--vectors=') || a.startsWith('--out=')) { const j = a.indexOf('='); args[a.slice(2, j)] = a.slice(j + 1); }
-    else if (a === '-h' || a === '--help') { usage(); return 0; }
-    else return usage('unknown argument ' + a);
-  }
-  if (args.selfTest) return selfTest();
-  if (!args.vectors || !args.out) return usage('--vectors and --out are required');
-  const ops = Object.assign({}, OPS, {log_exp_round_trip: roundTrip(OPS.log, OPS.exp)});
-  const [results, refused] = runVectors(args.vectors, ops, 'binary64');
-  const unsupported = Object.keys(OUTPUTS).filter((op) => !(op in ops) && op !== 'log_exp_round_trip');
-  writeResults(args.out, args.vectors, IMPLEMENTATION, results, unsupported);
-  const note = Object.keys(refused).sort().map((op) => `${op} ${refused[op]}`).join(', ');
-  console.log(`ganja: wrote ${results.length} results to ${args.out}` +
-              (note ? ` (exceptions, graded as DOMAIN_ERROR: ${note})` : ''));
-  return 0;
+  if (argv.length === 1 && argv[0] === '--self-test') return selfTest();
+  const ops = Object.assign({}, OPS, {log_exp_round_trip: rcv.roundTrip(OPS.log, OPS.exp)});
+  return rcv.runAdapter(argv, 'rotorcert adapter for ganja.js ' + GANJA_VERSION +
+                        ' (node ganja_adapter.js --vectors DIR --out RESULTS.json | --self-test)', IMPLEMENTATION, ops);
 }
 
 if (require.main === module) process.exitCode = main(process.argv.slice(2));
 
-module.exports = {hexfloat, parseHexfloat, OPS};
+module.exports = {hexfloat: rcv.hexfloat, parseHexfloat: rcv.parseHexfloat, OPS};

@@ -5,9 +5,10 @@
 
 Runs the binary64 vectors of `rotorcert vectors export` through kingdon and writes a results file
 for `rotorcert vectors check` (conformance/VECTORS.md). Reading, writing and the status rule are
-../common/rcvectors.py's: a Python exception raised inside kingdon -> DOMAIN_ERROR (every output
-NaN); every output component NaN -> DOMAIN_ERROR (kingdon has no status channel, RESULT-2);
-anything else -> OK with kingdon's numbers as computed. The adapter adds no domain checks, no
+the rotorcert_vectors package's (conformance/packages/python, installed into the adapter's
+environment by scripts/setup-adapters): a Python exception raised inside kingdon -> DOMAIN_ERROR
+(every output NaN); every output component NaN -> DOMAIN_ERROR (kingdon has no status channel,
+RESULT-2); anything else -> OK with kingdon's numbers as computed. The adapter adds no domain checks, no
 rescaling, no hemisphere flips and no renormalisation that kingdon does not do itself.
 
 Algebras and coefficients. Multivectors hold Python floats (kingdon's default values_asarray=list),
@@ -51,15 +52,11 @@ bivectors (exp raises NotImplementedError) and no translator/motor constructor: 
 to_axis_angle, log, slerp, nlerp, blend_qlb, blend_log, dq_from_rotation_translation, dq_sclerp,
 dq_blend, rotate_about_axis, skin_linear, skin_dual_quaternion (adapter.json says why for each).
 """
-import os
 import sys
+from importlib.metadata import version as _dist_version
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-
-from kingdon import Algebra  # noqa: E402
-from rcvectors import run_adapter  # noqa: E402
-
-from importlib.metadata import version as _dist_version  # noqa: E402
+from kingdon import Algebra
+from rotorcert_vectors import run_adapter
 
 KINGDON_VERSION = _dist_version("kingdon")
 
@@ -184,7 +181,7 @@ IMPLEMENTATION = {
         "(e31 = -e13 in kingdon's basis), motors of Algebra(3,0,1) by MOTOR-1; geometric product, "
         "normalized(), inv(), the >> sandwich, exp() of simple bivectors. No status channel: a Python "
         "exception raised by kingdon is graded DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, "
-        "anything else OK as computed (rcvectors.py)" % KINGDON_VERSION),
+        "anything else OK as computed (rotorcert_vectors)" % KINGDON_VERSION),
 }
 
 if __name__ == "__main__":
