@@ -33,6 +33,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/impls/ DESTINATION share/rotorcert/impls
 install(FILES ${PROJECT_SOURCE_DIR}/conformance/mutants/mutants.json DESTINATION share/rotorcert/mutants COMPONENT tool)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/conformance/adapters/ DESTINATION share/rotorcert/adapters COMPONENT tool
   PATTERN "CMakeLists.txt" EXCLUDE PATTERN "*.cmake" EXCLUDE PATTERN "__pycache__" EXCLUDE PATTERN "node_modules" EXCLUDE)
+# The adapters' environments for `rotorcert thirdparty` (into ~/.cache/rotorcert/adapters).
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/setup-adapters DESTINATION share/rotorcert COMPONENT tool)
 # The Python and JavaScript packages a library's own test suite certifies with (pytest plugin,
 # node:test helper): `pip install PREFIX/share/rotorcert/packages/python`, `npm install .../node`.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/conformance/packages/python ${PROJECT_SOURCE_DIR}/conformance/packages/node
