@@ -190,6 +190,46 @@ TEST(Engine, FromMatrixWithThePivotsSignIsAcceptableNotAFailure) {
   EXPECT_NE(wrong.worst_input.find("0x"), std::string::npos) << wrong.worst_input;
 }
 
+// MAT-2 measures a -q result by its distance to the canonical q (w > 0), which adds |w| of the
+// reference. Near a half turn, with |w| between the strict and the loose bar, -q is the same rotation
+// to the last bits: a QUALITY_WARNING as specified, ACCEPTABLE under `sign` (ACC-1), a clean pass
+// where the table declares the convention.
+TEST(Engine, MinusQNearAHalfTurnIsAcceptableNotAWarning) {
+  RC_CLAUSE("ACC-1");
+  const engine::AbiOp* op = engine::find_abi_op("from_matrix");
+  ASSERT_NE(op, nullptr);
+  const spec::ToleranceClass& tc = the_spec().lookup("eps16");
+  const double w = 100 * std::numeric_limits<double>::epsilon();  // between eps16's bars
+  const double s = std::sqrt(1 - w * w);
+  const double x = s * 0.6, y = s * 0.8, z = 0;  // q = (x, y, z, w), a unit quaternion to rounding
+  // The rotation matrix of q, column-major (LAYOUT-1), rounded to binary64.
+  const double m[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),
+                       2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+                       2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y)};
+  engine::Case c;
+  c.inputs = {std::vector<engine::Real>(m, m + 9)};
+  c.label = "near half turn";
+  engine::Observed minus_q;
+  minus_q.outputs = {{engine::Real(-x), engine::Real(-y), engine::Real(-z), engine::Real(-w)}};
+  const engine::CaseVerdict undeclared = engine::judge_case(*op, tc, c, minus_q, ref::Format::binary64);
+  EXPECT_EQ(undeclared.verdict, ref::Verdict::pass) << undeclared.error << " " << undeclared.detail;
+  EXPECT_EQ(undeclared.grade, engine::Grade::acceptable);
+  EXPECT_EQ(undeclared.convention, "sign");
+  EXPECT_FALSE(undeclared.declared);
+  const engine::Declarations declared{{}, {"from_matrix:sign"}};
+  const engine::CaseVerdict with_sign = engine::judge_case(*op, tc, c, minus_q, ref::Format::binary64, nullptr, &declared);
+  EXPECT_EQ(with_sign.verdict, ref::Verdict::pass);
+  EXPECT_TRUE(with_sign.declared);
+  // The canonical q itself is a plain pass; a different rotation near the same half turn still warns
+  // or fails, under every convention.
+  engine::Observed plus_q;
+  plus_q.outputs = {{engine::Real(x), engine::Real(y), engine::Real(z), engine::Real(w)}};
+  EXPECT_EQ(engine::judge_case(*op, tc, c, plus_q, ref::Format::binary64).grade, engine::Grade::valid);
+  engine::Observed other;
+  other.outputs = {{engine::Real(-x), engine::Real(-y), engine::Real(-z), engine::Real(w)}};
+  EXPECT_NE(engine::judge_case(*op, tc, c, other, ref::Format::binary64).verdict, ref::Verdict::pass);
+}
+
 TEST(Engine, SameSeedSameCases) {
   RC_CLAUSE("TOL-1");
   engine::CaseOptions a, b;

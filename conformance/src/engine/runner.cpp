@@ -313,9 +313,10 @@ CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Ca
   const double err = (e / eps).toDouble();
   const ref::Bars bars = bars_for(tc, op, c, eps);
   CaseVerdict verdict{ref::clause::TOL_1_verdict(err, bars), err, detail};
-  if (verdict.verdict != ref::Verdict::fail || convention != nullptr || tc.kind == "exact") return verdict;
+  if (verdict.verdict == ref::Verdict::pass || convention != nullptr || tc.kind == "exact") return verdict;
   // ACC-1: a numeric FAIL that is the same rotation under a convention a correct library may
-  // choose is ACCEPTABLE (a pass if the table declares that convention).
+  // choose is ACCEPTABLE (a pass if the table declares that convention); so is a QUALITY_WARNING
+  // that is a clean PASS under one (MAT-2's −q near a half turn, off by |w| of the reference).
   for (const AcceptableConvention& a : acceptable_conventions()) {
     if (!a.applies(op)) continue;
     const bool is_declared = declared != nullptr && declared->has_convention(op.name, a.id);
@@ -324,7 +325,7 @@ CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Ca
     if (!alt) continue;
     const double alt_err = (*alt / eps).toDouble();
     const ref::Verdict v = ref::clause::TOL_1_verdict(alt_err, bars);
-    if (v == ref::Verdict::fail) continue;
+    if (v == ref::Verdict::fail || (verdict.verdict == ref::Verdict::quality_warning && v != ref::Verdict::pass)) continue;
     CaseVerdict acceptable{v, alt_err, detail + " (" + a.id + ": " + a.description + ")"};
     acceptable.grade = Grade::acceptable;
     acceptable.convention = a.id;
