@@ -230,6 +230,30 @@ TEST(Engine, MinusQNearAHalfTurnIsAcceptableNotAWarning) {
   EXPECT_NE(engine::judge_case(*op, tc, c, other, ref::Format::binary64).verdict, ref::Verdict::pass);
 }
 
+// At w = 0 (a half turn) log q and log(-q) are equally short: a library that canonicalises to
+// w >= 0 returns the other one, the same rotation (ACC-1 shorter_arc, w <= 0).
+TEST(Engine, TheOtherLogOfAHalfTurnIsAcceptable) {
+  RC_CLAUSE("ACC-1");
+  RC_CLAUSE("LOG-1");
+  const engine::AbiOp* op = engine::find_abi_op("log");
+  ASSERT_NE(op, nullptr);
+  const spec::ToleranceClass& tc = the_spec().lookup(the_spec().find_clause("LOG-1")->tolerance);
+  engine::Case c;
+  c.inputs = {{engine::Real(0), engine::Real(0), engine::Real(-1), engine::Real(0)}};  // a half turn about -z
+  c.label = "example";
+  const double half_pi = std::acos(-1.0) / 2;
+  engine::Observed other;
+  other.outputs = {{engine::Real(0), engine::Real(0), engine::Real(half_pi)}};  // log(-q)
+  const engine::CaseVerdict v = engine::judge_case(*op, tc, c, other, ref::Format::binary64);
+  EXPECT_NE(v.verdict, ref::Verdict::fail) << v.error << " " << v.detail;
+  EXPECT_EQ(v.grade, engine::Grade::acceptable);
+  EXPECT_EQ(v.convention, "shorter_arc");
+  // Another rotation is not: a quarter turn's log.
+  engine::Observed wrong;
+  wrong.outputs = {{engine::Real(0), engine::Real(0), engine::Real(half_pi / 2)}};
+  EXPECT_EQ(engine::judge_case(*op, tc, c, wrong, ref::Format::binary64).verdict, ref::Verdict::fail);
+}
+
 TEST(Engine, SameSeedSameCases) {
   RC_CLAUSE("TOL-1");
   engine::CaseOptions a, b;
