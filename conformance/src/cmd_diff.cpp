@@ -50,7 +50,8 @@ std::string error_text(double e) {
   return s.str();
 }
 
-json optional_json(const std::optional<std::string>& s) { return s ? json(*s) : json(nullptr); }
+json optional_json(const std::optional<certify::LevelStatus>& s) { return s ? json(certify::to_string(*s)) : json(nullptr); }
+std::string status_text(const std::optional<certify::LevelStatus>& s) { return s ? certify::to_string(*s) : "not certified"; }
 json error_json(double e) { return std::isfinite(e) ? json(e) : json(nullptr); }
 
 json diff_json(const certify::ReportDiff& d) {
@@ -96,8 +97,8 @@ void print_diff(std::ostream& out, const certify::ReportDiff& d) {
     (t.regression() ? worse : improved ? better : same) += 1;
     for (const certify::LevelChange& l : t.levels)
       if (l.old_status != l.new_status)
-        out << "  level " << l.level << ": " << l.old_status.value_or("not certified") << " -> "
-            << l.new_status.value_or("not certified") << "  (" << certify::to_string(l.change) << ")\n";
+        out << "  level " << l.level << ": " << status_text(l.old_status) << " -> " << status_text(l.new_status)
+            << "  (" << certify::to_string(l.change) << ")\n";
     for (const certify::ClauseChange& c : t.clauses) {
       out << "  " << std::left << std::setw(11) << c.clause << outcome_text(c.old_outcome) << " -> "
           << outcome_text(c.new_outcome);

@@ -58,8 +58,8 @@ TEST(ReportDiff, ALostLevelAndAWorseResultAreRegressions) {
   ASSERT_EQ(d.tables.size(), 1u);
   ASSERT_EQ(d.tables[0].levels.size(), 1u);
   EXPECT_EQ(d.tables[0].levels[0].change, certify::Change::worse);
-  EXPECT_EQ(*d.tables[0].levels[0].old_status, "met");
-  EXPECT_EQ(*d.tables[0].levels[0].new_status, "not met");
+  EXPECT_EQ(*d.tables[0].levels[0].old_status, certify::LevelStatus::met);
+  EXPECT_EQ(*d.tables[0].levels[0].new_status, certify::LevelStatus::not_met);
   ASSERT_EQ(d.tables[0].clauses.size(), 1u) << "NORM-1 did not change";
   EXPECT_EQ(d.tables[0].clauses[0].clause, "COMPOSE-1");
   EXPECT_EQ(d.tables[0].clauses[0].outcome_change, certify::Change::worse);

@@ -22,7 +22,7 @@ void print_certificate(std::ostream& out, const Certificate& c, bool verbose) {
     const bool expected = expected_failure(c, r.clause) != nullptr;
     if (!verbose && r.outcome == Outcome::pass) continue;
     if (!verbose && r.outcome == Outcome::not_supported && !claimed(c, r.clause)) continue;
-    const bool has_worst = !(r.worst_op.empty() && r.worst_input.empty());
+    const bool has_worst = r.has_worst();
     out << "  " << std::left << std::setw(11) << r.clause << std::setw(16) << engine::to_string(r.outcome);
     if (has_worst) {
       std::ostringstream err;

@@ -11,7 +11,8 @@ namespace {
 
 using engine::Outcome;
 
-int level_rank(const std::string& status) { return status == "met" ? 0 : status == "met with warnings" ? 1 : 2; }
+/// LevelStatus is declared best first: met, met with warnings, not met.
+int level_rank(LevelStatus s) { return static_cast<int>(s); }
 
 Change compare_ranks(int old_rank, int new_rank) {
   return new_rank < old_rank ? Change::better : new_rank > old_rank ? Change::worse : Change::same;
@@ -36,12 +37,12 @@ TableDiff diff_table(const Certificate* o, const Certificate* n) {
   d.only_old = n == nullptr;
   d.only_new = o == nullptr;
 
-  std::map<std::string, std::string> old_levels, new_levels;
+  std::map<std::string, LevelStatus> old_levels, new_levels;
   std::vector<std::string> level_order;
   for (const auto& [from, into] : {std::pair{o, &old_levels}, std::pair{n, &new_levels}})
     if (from != nullptr)
       for (const LevelResult& l : level_results(*from)) {
-        (*into)[l.level] = to_string(l.status);
+        (*into)[l.level] = l.status;
         if (std::find(level_order.begin(), level_order.end(), l.level) == level_order.end()) level_order.push_back(l.level);
       }
   for (const std::string& level : level_order) {

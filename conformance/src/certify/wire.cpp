@@ -41,7 +41,7 @@ TableInfo table_info_from_json(const json& j) {
 }
 
 json worst_json(const engine::ClauseResult& r) {
-  if (r.worst_op.empty() && r.worst_input.empty()) return nullptr;
+  if (!r.has_worst()) return nullptr;
   return {{"error_eps", number_or_null(r.worst_error)},
           {"op", r.worst_op},
           {"label", r.worst_label},

@@ -53,9 +53,9 @@ std::vector<json> listed_failures(const Manifest& m) {
 
 /// Listed defects whose entry says "intermittent": true (the library reads uninitialised memory, so
 /// whether the defect shows depends on the stack it finds): not reproducing one is no surprise.
-std::set<std::string> intermittent_defects(const Manifest& m) {
+std::set<std::string> intermittent_defects(const std::vector<json>& listed) {
   std::set<std::string> r;
-  for (const json& f : listed_failures(m))
+  for (const json& f : listed)
     if (f.value("intermittent", false)) r.insert(f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>());
   return r;
 }
@@ -103,10 +103,10 @@ void finish(Library& lib, int cases_per_family, const std::set<std::string>& int
 /// language that calls it directly (conformance/adapters/NAME/reproducers/, named by the
 /// "reproducer" field of expected_failures.json, else by the clause), with the command that runs it
 /// and the ctest that checks it still shows the defect.
-void attach_reproducers(Library& lib) {
+void attach_reproducers(Library& lib, const std::vector<json>& listed) {
   const Manifest& m = lib.manifest;
   std::map<std::string, std::string> named;  // scalar/clause -> file
-  for (const json& f : listed_failures(m))
+  for (const json& f : listed)
     if (f.contains("reproducer"))
       named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
   for (Defect& d : lib.defects) {
@@ -129,6 +129,14 @@ void attach_reproducers(Library& lib) {
     d.reproducer = Reproducer{path.string(), ext == ".cpp" ? "C++" : ext == ".py" ? "Python" : "JavaScript", run,
                               "reproducer_" + m.name + "_" + stem};
   }
+}
+
+/// A library whose certificates are all in: its verdict and its defects' reproducers, from one
+/// reading of its expected_failures.json.
+void conclude(Library& lib, int cases_per_family) {
+  const std::vector<json> listed = listed_failures(lib.manifest);
+  finish(lib, cases_per_family, intermittent_defects(listed));
+  attach_reproducers(lib, listed);
 }
 
 json defect_json(const Defect& d) {
@@ -302,8 +310,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
           if (!command.empty()) command = reproduce(manifests[i].name, {clause});
         libs[i].certificates.push_back(cert);
       }
-    finish(libs[i], o.certify.cases.cases_per_family, intermittent_defects(manifests[i]));
-    attach_reproducers(libs[i]);
+    conclude(libs[i], o.certify.cases.cases_per_family);
   }
 
   // Route vectors: one export for the run, each adapter in its own environment.
@@ -363,8 +370,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       g.certificate.expected_failures = adapter_expected_failures(m, results.scalar);
       for (auto& [clause, command] : g.certificate.reproduce) command = reproduce(m.name, {clause});
       lib.certificates.push_back(std::move(g.certificate));
-      finish(lib, o.certify.cases.cases_per_family, intermittent_defects(m));
-      attach_reproducers(lib);
+      conclude(lib, o.certify.cases.cases_per_family);
     } catch (const std::exception& e) {
       lib.status = LibraryStatus::error;
       lib.reason = std::string("its results file cannot be graded: ") + e.what();

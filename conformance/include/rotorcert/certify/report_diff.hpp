@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <rotorcert/certify/certificate.hpp>
+#include <rotorcert/certify/verdict.hpp>
 
 namespace rotorcert::certify {
 
@@ -35,7 +36,7 @@ struct ClauseChange {
 
 struct LevelChange {
   std::string level;
-  std::optional<std::string> old_status, new_status;  // "met", "met with warnings", "not met"; empty: not certified
+  std::optional<LevelStatus> old_status, new_status;  // empty: the level was not certified in that report
   Change change = Change::same;
 };
 

@@ -14,6 +14,7 @@ namespace rotorcert::certify {
 
 /// LEVEL-1: a level is met when every clause of it PASSes; met with warnings when the others are
 /// QUALITY_WARNING; not met otherwise.
+/// Declared best first (rotorcert diff ranks levels by it).
 enum class LevelStatus { met, met_with_warnings, not_met };
 const char* to_string(LevelStatus s);  // "met", "met with warnings", "not met"
 

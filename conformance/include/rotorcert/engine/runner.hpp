@@ -77,6 +77,8 @@ struct ClauseResult {
   /// what was expected versus what came back.
   double worst_error = 0;
   std::string worst_op, worst_label, worst_input, worst_detail;
+  /// Whether a worst input was recorded (a clause that ran no case, or only passed, has none).
+  bool has_worst() const { return !(worst_op.empty() && worst_input.empty()); }
   /// Every finite error measured (eps units), per ABI op, in case order: percentiles, histograms.
   std::map<std::string, std::vector<double>> errors;
   /// The largest finite error per ABI op, with its input.
