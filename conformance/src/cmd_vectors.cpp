@@ -4,7 +4,7 @@
 //   check RESULTS.json [--vectors DIR] [--out DIR] [--verbose]
 //       grades a results file written by an adapter and prints the certificate; with --out also
 //       writes report.json/.md/.html. Exit 0 if every claimed clause is PASS or QUALITY_WARNING.
-//   run (--impl NAME | --plugin PATH) --scalar float|double --vectors DIR --out RESULTS.json
+//   run (--impl NAME | --plugin PATH [--table NAME]) --scalar float|double --vectors DIR --out RESULTS.json
 //       runs a built-in or plugin table on the vectors and writes its results file.
 // Exit 2 on usage errors and on files that cannot be read or are malformed (the message names
 // the file and the JSON path).
@@ -47,7 +47,7 @@ struct CheckArgs {
 };
 
 struct RunArgs {
-  std::string impl, plugin, scalar, vectors, out;
+  std::string impl, plugin, table, scalar, vectors, out;
 };
 
 struct Args {
@@ -154,9 +154,21 @@ int run_run(const Args& a) {
     } catch (const impl::PluginError& e) {
       return usage(e.what());
     }
+    // A plugin may hold several tables of one scalar (glm_quat and glm_mix, say): --table picks
+    // one by name, and without it only an unambiguous plugin is accepted.
+    std::vector<const rc_impl*> candidates;
+    std::string names;
     for (const rc_impl* t : plugin->tables())
-      if (t->scalar == scalar) table = t;
-    if (table == nullptr) return usage(a.run.plugin + " has no " + a.run.scalar + " table");
+      if (t->scalar == scalar && (a.run.table.empty() || a.run.table == (t->name ? t->name : ""))) {
+        candidates.push_back(t);
+        names += std::string(names.empty() ? "" : ", ") + (t->name ? t->name : "?");
+      }
+    if (candidates.empty())
+      return usage(a.run.plugin + " has no " + a.run.scalar + " table" + (a.run.table.empty() ? "" : " named '" + a.run.table + "'"));
+    if (candidates.size() > 1)
+      return usage(a.run.plugin + " has " + std::to_string(candidates.size()) + " " + a.run.scalar + " tables (" + names +
+                   "): choose one with --table NAME");
+    table = candidates.front();
   }
   const ref::Format format = engine::format_of(*table);
   const vectors::VectorSet set = vectors::load_vectors(spec, a.run.vectors, &format);
@@ -212,6 +224,8 @@ Command add_vectors(CLI::App& parent) {
   CLI::App* r = a->run_app = app->add_subcommand("run", "Run a built-in or plugin table on the vectors and write its results file");
   r->add_option("--impl", a->run.impl, "Built-in implementation (see `rotorcert list`)")->option_text("NAME");
   r->add_option("--plugin", a->run.plugin, "Plugin library (.so through the C ABI)")->option_text("PATH");
+  r->add_option("--table", a->run.table, "With --plugin: the table of that name (needed when it has several of the scalar)")
+      ->option_text("NAME");
   r->add_option("--scalar", a->run.scalar, "float or double")->required()->check(CLI::IsMember({"float", "double"}));
   r->add_option("--vectors", a->run.vectors, "The vectors (directory or index.json)")->required()->option_text("DIR");
   r->add_option("--out", a->run.out, "Results file to write")->required()->option_text("RESULTS.json");

@@ -52,3 +52,29 @@ TEST(CliList, AddsAPluginAndRejectsOneThatDoesNotLoad) {
 }
 
 }  // namespace
+
+namespace {
+
+// `vectors run --plugin`: a plugin with two tables of one scalar (glm_quat's plugin holds glm_quat
+// and glm_mix, both float) is ambiguous without --table, which picks one by name.
+TEST(CliVectorsRun, ChoosesOneOfSeveralTablesByName) {
+  const fs::path plugin = fs::path(ROTORCERT_PLUGIN_DIR) / "rotorcert_impl_glm_quat.so";
+  const fs::path dir = fs::temp_directory_path() / ("rotorcert_cli_table_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  ASSERT_EQ(rotorcert("vectors export --out '" + (dir / "v").string() + "' --scalar float --cases 2 --clause NORM-1").exit_code, 0);
+  const std::string common = "vectors run --plugin '" + plugin.string() + "' --scalar float --vectors '" + (dir / "v").string() +
+                             "' --out '" + (dir / "r.json").string() + "'";
+  const ToolRun ambiguous = rotorcert(common);
+  EXPECT_EQ(ambiguous.exit_code, 2) << ambiguous.output;
+  EXPECT_NE(ambiguous.output.find("glm_quat, glm_mix"), std::string::npos) << ambiguous.output;
+  EXPECT_NE(ambiguous.output.find("--table NAME"), std::string::npos) << ambiguous.output;
+  const ToolRun chosen = rotorcert(common + " --table glm_mix");
+  EXPECT_EQ(chosen.exit_code, 0) << chosen.output;
+  EXPECT_NE(chosen.output.find("results of glm_mix (float)"), std::string::npos) << chosen.output;
+  const ToolRun unknown = rotorcert(common + " --table nope");
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("no float table named 'nope'"), std::string::npos) << unknown.output;
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,8 +1,11 @@
 // The differential engine judged on implementations whose defects are known: a correct one, one
 // a few eps off, one that forgets to normalise, one that hides bad input behind a valid-looking
 // answer, one that reports DOMAIN_ERROR but leaves numbers behind, and one without the op.
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +50,13 @@ struct Normalizer {
     if constexpr (Defect == 1) {  // an identity answer for bad input, status OK (GLM's habit)
       if (!normalize_exact(q, out)) out = {0, 0, 0, 1};
       return ri::Status::ok;
+    }
+    if constexpr (Defect == 4) {  // a finite answer for the zero quaternion that is no sentinel
+      if (!normalize_exact(q, out)) {
+        if (std::isfinite(q[0] + q[1] + q[2] + q[3])) out = {1, 0, 0, 0};
+        else return ri::Status::domain_error;
+        return ri::Status::ok;
+      }
     }
     if (!normalize_exact(q, out)) return ri::Status::domain_error;
     if constexpr (Defect == 2) {  // rotated by 30 eps about z: within NORM-1's loose bar, not its strict one
@@ -137,8 +147,28 @@ TEST(Engine, AnUnnormalisedResultFailsWithItsWorstInputInHexfloat) {
 
 TEST(Engine, BadInputAnsweredWithAValidLookingValueFails) {
   RC_CLAUSE("RESULT-2");
-  const auto r = run(ri::table<Normalizer<1>>(), "EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  const auto r = run(ri::table<Normalizer<1>>(), "EDGE-7");  // the identity for a NaN: no sentinel there
   EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_detail.find("expected DOMAIN_ERROR"), std::string::npos) << r.worst_detail;
+}
+
+TEST(Engine, ZeroAnsweredWithTheIdentityIsAcceptable) {
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("ACC-1");
+  const auto r = run(ri::table<Normalizer<1>>(), "EDGE-6");
+  EXPECT_EQ(r.outcome, engine::Outcome::pass) << r.worst_detail;
+  ASSERT_EQ(r.acceptable.size(), 1u);
+  EXPECT_EQ(r.acceptable[0].convention, "zero_sentinel");
+  EXPECT_FALSE(r.acceptable[0].declared);
+}
+
+TEST(Engine, ZeroAnsweredWithAnotherRotationFails) {
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("ACC-1");
+  const auto r = run(ri::table<Normalizer<4>>(), "EDGE-6");  // a half turn about x: no sentinel
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_TRUE(r.acceptable.empty());
   EXPECT_NE(r.worst_detail.find("expected DOMAIN_ERROR"), std::string::npos) << r.worst_detail;
 }
 
@@ -348,4 +378,103 @@ TEST(Engine, ExtremeExamplesAreJudgedByRobustAndNeverChangeMeaningInBinary32) {
   EXPECT_FALSE(has_label(checks_of("EDGE-6", ref::Format::binary32), "example EX-NORM-1-h"));
   // An ordinary example stays with its clause in both formats.
   EXPECT_TRUE(has_label(checks_of("NORM-1", ref::Format::binary32), "example EX-NORM-1-a"));
+}
+
+namespace {
+
+/// slerp by the textbook formula on the hemisphere-aligned pair; Negate = true returns -result,
+/// the same rotation with the other sign.
+template <bool Negate>
+struct SignedSlerp : Normalizer<0> {
+  static ri::Status slerp(const Q& a, const Q& b, const double& t, Q& out) {
+    double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+    Q bb = b;
+    if (d < 0) {
+      d = -d;
+      for (double& x : bb) x = -x;
+    }
+    const double theta = std::acos(std::min(1.0, d));
+    const double s = std::sin(theta);
+    const double wa = s == 0 ? 1 - t : std::sin((1 - t) * theta) / s, wb = s == 0 ? t : std::sin(t * theta) / s;
+    for (std::size_t i = 0; i < 4; ++i) out[i] = (Negate ? -1 : 1) * (wa * a[i] + wb * bb[i]);
+    return ri::Status::ok;
+  }
+};
+
+}  // namespace
+
+TEST(Engine, AnEndpointOfTheOtherSignFails) {
+  RC_CLAUSE("SLERP-3");
+  EXPECT_EQ(run(ri::table<SignedSlerp<false>>(), "SLERP-3").outcome, engine::Outcome::pass);
+  // -a at t = 0 and -b' at t = 1 are the same rotations, and still a FAIL: the clause fixes the sign.
+  const auto negated = run(ri::table<SignedSlerp<true>>(), "SLERP-3");
+  EXPECT_EQ(negated.outcome, engine::Outcome::fail);
+  EXPECT_GE(negated.worst_error, 1e15) << negated.worst_detail;  // |q - r| = 2, in eps
+}
+
+namespace {
+
+/// normalize through the batch entry point, with one hygiene defect each (HYG-1 .. HYG-3); None
+/// is the same code without it.
+enum class Hygiene { none, writes_input, shared_scratch, sticky_flag };
+
+template <Hygiene H>
+struct NormalizeBatch : Normalizer<0> {
+  static int normalize_batch(std::size_t n, const double* q, double* out, std::uint8_t* status) {
+    static Q scratch;             // shared_scratch: one buffer for every caller
+    static std::atomic<int> in_flight{0};
+    static bool saw_nan = false;  // sticky_flag: set by a NaN input, never cleared
+    for (std::size_t i = 0; i < n; ++i) {
+      Q in{q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, r{};
+      if constexpr (H == Hygiene::shared_scratch) {
+        in_flight.fetch_add(1);
+        scratch = in;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));  // another caller overwrites it
+        in = scratch;
+        if (in_flight.load() > 1) in[0] += 1;  // what a torn scratch buffer gives, made certain
+        in_flight.fetch_sub(1);
+      }
+      if (!std::isfinite(in[0] + in[1] + in[2] + in[3])) saw_nan = true;
+      const bool ok = normalize_exact(in, r);
+      if (H == Hygiene::sticky_flag && saw_nan) r[3] = std::nextafter(r[3], 2.0);
+      for (int c = 0; c < 4; ++c) out[4 * i + c] = ok ? r[c] : NAN;
+      status[i] = ok ? RC_OK : RC_DOMAIN_ERROR;
+      if (H == Hygiene::writes_input) const_cast<double*>(q)[4 * i] = -q[4 * i];  // "aligns" its input in place
+    }
+    return 0;
+  }
+};
+
+}  // namespace
+
+TEST(Engine, HygieneHoldsForACleanTable) {
+  RC_CLAUSE("HYG-1");
+  RC_CLAUSE("HYG-2");
+  RC_CLAUSE("HYG-3");
+  for (const char* clause : {"HYG-1", "HYG-2", "HYG-3"})
+    EXPECT_EQ(run(ri::table<NormalizeBatch<Hygiene::none>>(), clause).outcome, engine::Outcome::pass) << clause;
+}
+
+TEST(Engine, AnOpThatWritesItsInputFails) {
+  RC_CLAUSE("HYG-1");
+  const auto r = run(ri::table<NormalizeBatch<Hygiene::writes_input>>(), "HYG-1");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_detail.find("modified its input q"), std::string::npos) << r.worst_detail;
+  EXPECT_EQ(run(ri::table<NormalizeBatch<Hygiene::writes_input>>(), "HYG-3").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, ASharedScratchBufferFailsUnderThreads) {
+  RC_CLAUSE("HYG-2");
+  const auto r = run(ri::table<NormalizeBatch<Hygiene::shared_scratch>>(), "HYG-2");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_detail.find("threads at once"), std::string::npos) << r.worst_detail;
+  // Called from one thread, the same code is clean.
+  EXPECT_EQ(run(ri::table<NormalizeBatch<Hygiene::shared_scratch>>(), "HYG-1").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, StateLeftByAnEarlierCallFails) {
+  RC_CLAUSE("HYG-3");
+  const auto r = run(ri::table<NormalizeBatch<Hygiene::sticky_flag>>(), "HYG-3");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_NE(r.worst_detail.find("after"), std::string::npos) << r.worst_detail;
 }

@@ -360,7 +360,8 @@ TEST(VectorsCheck, StatusMismatchesInEitherDirectionFail) {
   const auto [cf, unit] = find_vector(set, "COMPOSE-1", "compose", "random");
   ASSERT_NE(zero, nullptr);
   ASSERT_NE(unit, nullptr);
-  EXPECT_EQ(zero->result, "invalid");
+  EXPECT_EQ(zero->result, "acceptable");  // DOMAIN_ERROR expected, ACC-1 zero_sentinel accepted (EDGE-6)
+  EXPECT_EQ(zero->acceptable, std::vector<std::string>{"zero_sentinel"});
   EXPECT_EQ(unit->result, "valid");
   auto outcome = [&](const std::string& id, const json& status, const json& out, const std::string& clause) {
     json r = base;
@@ -371,7 +372,9 @@ TEST(VectorsCheck, StatusMismatchesInEitherDirectionFail) {
   json copy = base;
   const json base_out = result_for(copy, unit->id)["out"]["out_q"];
   const json nans = {"nan", "nan", "nan", "nan"}, numbers = {"0x0p+0", "0x0p+0", "0x0p+0", "0x1p+0"};
-  EXPECT_EQ(outcome(zero->id, "OK", numbers, "EDGE-6"), engine::Outcome::fail);          // bad input hidden
+  const json half_turn = {"0x1p+0", "0x0p+0", "0x0p+0", "0x0p+0"};
+  EXPECT_EQ(outcome(zero->id, "OK", half_turn, "EDGE-6"), engine::Outcome::fail);        // bad input hidden
+  EXPECT_EQ(outcome(zero->id, "OK", numbers, "EDGE-6"), engine::Outcome::pass);          // the identity sentinel
   EXPECT_EQ(outcome(zero->id, "DOMAIN_ERROR", numbers, "EDGE-6"), engine::Outcome::fail);  // status without NaN
   EXPECT_EQ(outcome(zero->id, "DOMAIN_ERROR", nans, "EDGE-6"), engine::Outcome::pass);
   EXPECT_EQ(outcome(unit->id, "DOMAIN_ERROR", nans, "COMPOSE-1"), engine::Outcome::fail);  // spurious error

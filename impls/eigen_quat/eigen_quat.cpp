@@ -83,7 +83,10 @@ struct EigenQuat {
   static constexpr const char* const preconditions[] = {
       "apply_vector:unit_quaternion", "apply_bivector:unit_quaternion", "to_matrix:unit_quaternion",
       "slerp:unit_quaternion", "slerp:t_in_unit_interval", "from_matrix:rotation_matrix", "from_axis_angle:unit_axis",
-      nullptr};
+      // nlerp and QLB are glue with Eigen's operations (Eigen has neither); they take the
+      // contract of the interpolation they copy, QuaternionBase::slerp (unit quaternions), so
+      // that no FAIL of the glue on a zero or non-unit input is charged to Eigen.
+      "nlerp:unit_quaternion", "blend_qlb:unit_quaternion", nullptr};
 
   // -- Core --
 

@@ -123,8 +123,8 @@ TEST(EigenQuat, NormalizedOfZeroIsZeroNotDomainError) {
   Q<float> out;
   std::uint8_t st = 0xff;
   ops<float>()->normalize(1, zero.data(), out.data(), &st);
-  EXPECT_EQ(st, RC_OK);                     // EDGE-6 wants DOMAIN_ERROR
-  EXPECT_EQ(out, (Q<float>{0, 0, 0, 0}));  // and NaN; inverse() likewise returns 0
+  EXPECT_EQ(st, RC_OK);                     // not DOMAIN_ERROR, but the all-zero sentinel of ACC-1
+  EXPECT_EQ(out, (Q<float>{0, 0, 0, 0}));  // (zero_sentinel, spec 2.2.0); inverse() likewise returns 0
   ops<float>()->inverse(1, zero.data(), out.data(), &st);
   EXPECT_EQ(out, (Q<float>{0, 0, 0, 0}));
 }

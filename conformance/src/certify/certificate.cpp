@@ -22,6 +22,7 @@ TableInfo table_info(const rc_impl& table, std::string source, std::string plugi
   t.plugin_path = std::move(plugin_path);
   for (int i = 0; i < 6; ++i)
     if (table.levels & (1u << i)) t.claimed_levels.emplace_back(kLevelNames[i]);
+  t.claimed_levels.emplace_back("Hygiene");  // every C-ABI table's contract (HYG-*, engine::claimed_clauses)
   t.claimed_clauses = engine::claimed_clauses(table);
   for (const engine::AbiOp& op : engine::abi_ops())
     if (engine::supports(table, op.name)) t.supported_ops.push_back(op.name);

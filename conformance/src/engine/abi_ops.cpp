@@ -1,5 +1,7 @@
 #include <rotorcert/engine/abi_op.hpp>
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <span>
 
@@ -226,6 +228,21 @@ const AbiOp* find_abi_op(const std::string& name) {
   for (const AbiOp& op : abi_ops())
     if (op.name == name) return &op;
   return nullptr;
+}
+
+const AbiOp& judged_op(const std::string& clause, const std::string& op) {
+  const AbiOp* d = find_abi_op(op);
+  if (d == nullptr) throw std::logic_error("no ABI op " + op);
+  if (clause == "SLERP-3" && op == "slerp") {
+    // slerp(a, b, 0) = a and slerp(a, b, 1) = b', the hemisphere-aligned b: -b' is a FAIL.
+    static const AbiOp endpoints = [d] {
+      AbiOp o = *d;
+      o.outputs[0].measure = Measure::signed_unit_rotation;
+      return o;
+    }();
+    return endpoints;
+  }
+  return *d;
 }
 
 int call(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,

@@ -74,7 +74,7 @@ const std::map<std::string, std::vector<std::string>>& clause_ops() {
       {"EDGE-4", {"compose", "inverse", "apply_vector", "to_matrix", "slerp", "nlerp", "blend_qlb", "dq_apply_point"}},
       {"EDGE-5", join(quaternion_ops, {"dq_apply_point", "dq_normalize", "dq_sclerp", "dq_blend", "from_axis_angle",
                                        "rotate_about_axis"})},
-      {"EDGE-6", join(quaternion_ops, rigid_ops)},
+      {"EDGE-6", join(join(quaternion_ops, rigid_ops), {"from_axis_angle", "rotate_about_axis"})},
       {"EDGE-7", join(join(quaternion_ops, rigid_ops), {"from_matrix", "from_axis_angle", "exp", "rotate_about_axis",
                                                         "skin_linear", "skin_dual_quaternion"})},
       {"EDGE-8", {"normalize", "apply_vector", "to_matrix", "slerp", "nlerp", "log"}},
@@ -633,6 +633,22 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       std::fill(c.inputs[a].begin(), c.inputs[a].begin() + 4, Real(0));
       cases.push_back(labelled(c, "zero real part in " + find_abi_op(op)->inputs[a].name));
     }
+    // AXANG-2, AXIS-1: a zero axis has no direction, even for a zero angle.
+    const AbiOp& d = *find_abi_op(op);
+    for (std::size_t a = 0; a < d.inputs.size(); ++a) {
+      if (!is_axis_input(d, d.inputs[a])) continue;
+      for (int signs = 0; signs < 2; ++signs) {
+        Case c = random(2);
+        for (int j = 0; j < 3; ++j) c.inputs[a][std::size_t(j)] = Real(signs && j != 1 ? -0.0 : 0.0);
+        cases.push_back(labelled(c, std::string(signs ? "axis of +-0 in " : "zero axis in ") + d.inputs[a].name));
+      }
+      if (d.name == "from_axis_angle") {  // inputs {angle, axis}: the identity's angle does not help
+        Case z = random(2);
+        for (int j = 0; j < 3; ++j) z.inputs[a][std::size_t(j)] = Real(0);
+        z.inputs[0] = {Real(0)};
+        cases.push_back(labelled(z, "zero axis in " + d.inputs[a].name + ", angle 0"));
+      }
+    }
   } else if (clause == "EDGE-7") {
     const AbiOp* d = find_abi_op(op);
     const Real specials[3] = {ref::ScalarTraits<Real>::nan(), Real("inf"), -Real("inf")};
@@ -781,14 +797,13 @@ std::optional<Case> example_case(const spec::Spec& spec, const spec::Example& ex
   return c;
 }
 
-/// The operation clause an ABI op belongs to (the first clause judged by that op alone).
+}  // namespace
+
 std::string main_clause_of(const std::string& op) {
   for (const auto& [clause, ops] : clause_ops())
     if (clause.rfind("EDGE-", 0) != 0 && clause != "SKIN-3" && ops.size() == 1 && ops[0] == op) return clause;
   return {};
 }
-
-}  // namespace
 
 Real round_to(ref::Format format, const Real& x) {
   if (format == ref::Format::binary32) return Real(mpfr_get_flt(x.mpfr_srcptr(), MPFR_RNDN));
@@ -872,6 +887,7 @@ std::vector<Check> checks_for_clause_impl(const spec::Spec& spec, const std::str
   if (cl == nullptr) return checks;
   for (const std::string& op : supported_ops) {
     Check check;
+    check.clause = clause;
     check.op = op;
     if (clause == "EXP-2") {
       // exp(log q) = q through the implementation: one check, on log's inputs, needing both ops.

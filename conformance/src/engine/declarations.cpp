@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <rotorcert/engine/cases.hpp>
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
@@ -80,6 +81,46 @@ std::vector<std::size_t> tied_influences(const Case& c, std::size_t qa, std::siz
   for (std::size_t i = 0; i < c.k; ++i)
     if (long(i) != p && near_tie(normalised_dot(reals, i, reals, std::size_t(p)), f)) tied.push_back(i);
   return tied;
+}
+
+/// The case with every zero quaternion replaced by the identity (0, 0, 0, 1), every dual
+/// quaternion of zero real part by the identity motion, and a zero axis by +z at angle 0: the
+/// input whose output is the identity sentinel of ACC-1 zero_sentinel. nullopt when the case
+/// has no zero block.
+std::optional<Case> identity_substituted(const AbiOp& op, const Case& c) {
+  Case id = c;
+  bool any = false;
+  for (std::size_t a = 0; a < op.inputs.size() && a < id.inputs.size(); ++a) {
+    const Array& arr = op.inputs[a];
+    auto& v = id.inputs[a];
+    if (arr.stride == 4 || arr.stride == 8) {
+      const std::size_t s = static_cast<std::size_t>(arr.stride);
+      for (std::size_t j = 0; j + s <= v.size(); j += s) {
+        if (block_norm(v, j, 4) != 0) continue;
+        for (std::size_t i = 0; i < s; ++i) v[j + i] = Real(i == 3 ? 1 : 0);
+        any = true;
+      }
+    } else if (is_axis_input(op, arr) && v.size() == 3 && block_norm(v, 0, 3) == 0) {
+      v = {Real(0), Real(0), Real(1)};
+      const std::size_t angle = input_index(op, "angle");
+      if (angle < id.inputs.size()) id.inputs[angle] = {Real(0)};
+      any = true;
+    }
+  }
+  if (!any) return std::nullopt;
+  return id;
+}
+
+/// The exact product of compose (a b, QUAT-1) or dq_compose ((ra rb, ra db + da rb), DQ-2) on
+/// the unnormalised inputs, in ABI layout.
+std::vector<Real> algebraic_product(const AbiOp& op, const Case& c) {
+  auto out = [](const Quat& q) { return std::vector<Real>{q.x, q.y, q.z, q.w}; };
+  if (op.name == "compose") return out(quat(c.inputs[0]) * quat(c.inputs[1]));
+  const Quat ra = quat(c.inputs[0], 0), da = quat(c.inputs[0], 1), rb = quat(c.inputs[1], 0), db = quat(c.inputs[1], 1);
+  std::vector<Real> r = out(ra * rb);
+  const std::vector<Real> d = out(ra * db + da * rb);
+  r.insert(r.end(), d.begin(), d.end());
+  return r;
 }
 
 std::vector<Precondition> build_preconditions() {
@@ -209,16 +250,19 @@ std::vector<AcceptableConvention> build_conventions() {
                  [negative_real](const AbiOp&, const Case&, const Values& want, ref::Format) { return negative_real(want); },
                  [log_error, negative_real](const AbiOp&, const Case&, const Values& got, const Values& want,
                                             ref::Format) -> std::optional<Real> {
-                   if (!negative_real(want)) return std::nullopt;
+                   // pi u' only: a log near 0 is the log of -q, shorter_arc's case.
+                   if (!negative_real(want) || block_norm(got[0], 0, 3) < ref::ScalarTraits<Real>::pi() / Real(2))
+                     return std::nullopt;
                    return log_error(got, want);
                  }});
+  // A negative real q included: its log of -q is 0 (log(-1) = 0, the identity's log).
   all.push_back({"shorter_arc", "log returns the logarithm of -q (|v| <= pi/2) where w <= 0: the same rotation", false, is("log"),
-                 [obtuse, negative_real](const AbiOp&, const Case&, const Values& want, ref::Format) {
-                   return obtuse(want) && !negative_real(want);
-                 },
+                 [obtuse](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse(want); },
                  [log_error, obtuse, negative_real](const AbiOp&, const Case&, const Values& got, const Values& want,
                                                     ref::Format) -> std::optional<Real> {
-                   if (!obtuse(want) || negative_real(want)) return std::nullopt;
+                   if (!obtuse(want)) return std::nullopt;
+                   if (negative_real(want) && block_norm(got[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2))
+                     return std::nullopt;  // pi u': minus_one_axis
                    return log_error(got, want);
                  }});
 
@@ -301,6 +345,59 @@ std::vector<AcceptableConvention> build_conventions() {
                                                   (Real(1) - t) * a.y + t * b.y, (Real(1) - t) * a.z + t * b.z});
                    return unit_rotation_error(got[0], other);
                  }});
+
+  // EDGE-6: a zero quaternion, zero dual real part or zero axis has no rotation; the spec answers
+  // DOMAIN_ERROR. A library without a status channel must answer something, and two answers are
+  // defined, deterministic and documented practice (Eigen's inverse() "returns an invalid result
+  // to flag the error": zero; three.js, Babylon.js, Unity: the identity): ACCEPTABLE, never a
+  // partly-NaN or arbitrary finite output.
+  all.push_back({"zero_sentinel",
+                 "a zero input (quaternion, dual real part or axis) gives the all-zero output or exactly the identity "
+                 "rotation's output instead of DOMAIN_ERROR",
+                 false,
+                 [](const AbiOp& op) { return has_stride(op, 4) || has_stride(op, 8) || op.name == "from_axis_angle" ||
+                                              op.name == "rotate_about_axis"; },
+                 [](const AbiOp& op, const Case& c, const Values&, ref::Format f) {
+                   return robust_clause_of(op, c, f) == "EDGE-6" && identity_substituted(op, c).has_value();
+                 },
+                 [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
+                   if (robust_clause_of(op, c, f) != "EDGE-6") return std::nullopt;
+                   const bool all_zero = std::all_of(got.begin(), got.end(), [](const std::vector<Real>& a) {
+                     return std::all_of(a.begin(), a.end(), [](const Real& x) { return x == 0; });
+                   });
+                   if (all_zero) return Real(0);
+                   const std::optional<Case> id = identity_substituted(op, c);
+                   if (!id) return std::nullopt;
+                   const ReferenceResult r = op.reference(id->inputs, id->k);
+                   if (r.status != ref::Status::ok) return std::nullopt;
+                   // The identity's output as any correct library may give it (identity_axis:
+                   // Eigen's axis (1, 0, 0) for angle 0).
+                   Real e = output_error(op, got, r.outputs, *id, f);
+                   for (const AcceptableConvention& a : acceptable_conventions())
+                     if (!a.outside_domain && !a.declared_only && a.applies(op) && a.relevant(op, *id, r.outputs, f))
+                       if (const std::optional<Real> alt = a.error(op, *id, got, r.outputs, f); alt && *alt < e) e = *alt;
+                   return e;
+                 },
+                 true});
+  // COMPOSE-1 and DQ-2 are defined on the unnormalised input: with a zero factor (real part) the
+  // product of the algebra exists, and a general quaternion library returns it.
+  all.push_back({"algebraic_product",
+                 "compose with a zero factor (dual real part) returns the exact product of the algebra instead of DOMAIN_ERROR",
+                 false, [](const AbiOp& op) { return op.name == "compose" || op.name == "dq_compose"; },
+                 [](const AbiOp& op, const Case& c, const Values&, ref::Format f) { return robust_clause_of(op, c, f) == "EDGE-6"; },
+                 [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
+                   if (robust_clause_of(op, c, f) != "EDGE-6") return std::nullopt;
+                   const std::vector<Real> want = algebraic_product(op, c);
+                   Real worst(0), size(0);
+                   for (std::size_t i = 0; i < want.size(); ++i) {
+                     worst = std::max(worst, Real(abs(got[0][i] - want[i])));
+                     size = std::max(size, Real(abs(want[i])));
+                   }
+                   if (mpfr::isnan(worst)) return worst;
+                   if (size == 0) return worst == 0 ? Real(0) : Real("inf");
+                   return worst / size;
+                 },
+                 true});
   return all;
 }
 
@@ -340,9 +437,10 @@ const std::vector<AcceptableConvention>& acceptable_conventions() {
 std::vector<std::string> acceptable_for_case(const AbiOp& op, const Case& c, ref::Format f) {
   std::vector<std::string> ids;
   const ReferenceResult want = op.reference(c.inputs, c.k);
-  if (want.status != ref::Status::ok) return ids;
+  const bool outside = want.status != ref::Status::ok;
   for (const AcceptableConvention& a : acceptable_conventions())
-    if (a.applies(op) && a.relevant(op, c, want.outputs, f)) ids.push_back(a.id);
+    if (a.outside_domain == outside && a.applies(op) && a.relevant(op, c, want.outputs, f))
+      ids.push_back(a.id);
   return ids;
 }
 

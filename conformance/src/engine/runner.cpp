@@ -1,8 +1,10 @@
 #include <rotorcert/engine/runner.hpp>
+#include <rotorcert/engine/hygiene.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <random>
 #include <set>
@@ -93,6 +95,13 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
     }
     case Measure::unit_rotation:
       return max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got)));
+    case Measure::signed_unit_rotation: {
+      Real worst(0);
+      for (int i = 0; i < 4; ++i) worst = max(worst, Real(abs(got[i] - want[i])));
+      if (mpfr::isnan(worst)) return worst;
+      return max(max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got))),
+                 worst);
+    }
     case Measure::canonical_rotation: {
       // MAT-2: q and -q are one rotation, but from_matrix has one answer, w > 0. A result on the
       // other side of the reference (negative dot product) is off by |w_ref|: within the bar (a
@@ -158,7 +167,7 @@ void run_check(const rc_impl& table, const spec::ToleranceClass& tc, const Check
                Record record) {
   const ref::Format f = format_of(table);
   const Declarations declared = declarations_of(table);
-  const AbiOp& op = *find_abi_op(check.op);
+  const AbiOp& op = judged_op(check.clause, check.op);
   std::vector<std::vector<const Case*>> batches;
   if (hooks.one_at_a_time) {
     for (const Case& c : check.cases) batches.push_back({&c});
@@ -246,6 +255,71 @@ std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::
   return result;
 }
 
+RawCall call_raw(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases, std::size_t k) {
+  RawCall r;
+  auto bytes = [](const auto& v) {
+    const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+    return std::vector<unsigned char>(p, p + v.size() * sizeof(v[0]));
+  };
+  auto run = [&](auto tag) {
+    using S = decltype(tag);
+    Buffers<S> buf;
+    buf.fill(op, cases, k);
+    r.scalar_size = sizeof(S);
+    for (const auto& v : buf.in) r.in_before.push_back(bytes(v));
+    std::fenv_t judge_environment;
+    if (call_environment_set) {
+      std::fegetenv(&judge_environment);
+      std::fesetenv(&call_environment);
+    }
+    r.call_rc = call(table, op.name, cases.size(), k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
+    if (call_environment_set) std::fesetenv(&judge_environment);
+    for (const auto& v : buf.in) r.in_after.push_back(bytes(v));
+    for (const auto& v : buf.out) r.out.push_back(bytes(v));
+    r.status.assign(buf.status.begin(), buf.status.begin() + long(cases.size()));
+  };
+  if (table.scalar == RC_SCALAR_FLOAT32) run(float{});
+  else run(double{});
+  return r;
+}
+
+namespace {
+std::vector<Real> values_of(const std::vector<unsigned char>& bytes, std::size_t from, std::size_t count, std::size_t size) {
+  std::vector<Real> v;
+  for (std::size_t i = from; i < from + count && (i + 1) * size <= bytes.size(); ++i) {
+    if (size == sizeof(float)) {
+      float x;
+      std::memcpy(&x, bytes.data() + i * size, size);
+      v.emplace_back(x);
+    } else {
+      double x;
+      std::memcpy(&x, bytes.data() + i * size, size);
+      v.emplace_back(x);
+    }
+  }
+  return v;
+}
+}  // namespace
+
+std::vector<Real> RawCall::output(const AbiOp& op, std::size_t a, std::size_t i) const {
+  const std::size_t s = static_cast<std::size_t>(op.outputs[a].stride);
+  return values_of(out[a], i * s, s, scalar_size);
+}
+
+std::vector<Real> RawCall::input(const AbiOp& op, std::size_t a, std::size_t i, std::size_t k, bool after) const {
+  const std::size_t s = static_cast<std::size_t>(op.inputs[a].stride) * (op.inputs[a].per_influence ? k : 1);
+  return values_of(after ? in_after[a] : in_before[a], i * s, s, scalar_size);
+}
+
+bool RawCall::same_element(const AbiOp& op, std::size_t i, const RawCall& other, std::size_t j) const {
+  if (call_rc != other.call_rc || status.at(i) != other.status.at(j)) return false;
+  for (std::size_t a = 0; a < op.outputs.size(); ++a) {
+    const std::size_t n = static_cast<std::size_t>(op.outputs[a].stride) * scalar_size;
+    if (std::memcmp(out[a].data() + i * n, other.out[a].data() + j * n, n) != 0) return false;
+  }
+  return true;
+}
+
 CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, const Observed& log_got,
                              const Observed& exp_got, ref::Format f) {
   const Real eps = ref::format_epsilon<Real>(f);
@@ -301,6 +375,31 @@ CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Ca
   if (want.status == ref::Status::domain_error) {
     if (st == RC_DOMAIN_ERROR && std::all_of(got.begin(), got.end(), all_nan))
       return {ref::Verdict::pass, 0, "DOMAIN_ERROR with NaN outputs, as required"};
+    // RESULT-2: a library without a status channel signals the error in band, every output
+    // component NaN or infinite (IEEE's invalid and divide-by-zero answers); never a number.
+    const auto non_finite = [](const std::vector<Real>& v) {
+      return std::none_of(v.begin(), v.end(), [](const Real& x) { return mpfr::isfinite(x); });
+    };
+    if (st == RC_OK && std::all_of(got.begin(), got.end(), non_finite))
+      return {ref::Verdict::pass, 0, "OK with every output non-finite: the domain error signalled in band (RESULT-2)"};
+    // ACC-1 outside the domain: an OK output that is a defined answer a correct library may give
+    // (EDGE-6: zero_sentinel, algebraic_product) is ACCEPTABLE; anything else fails the status.
+    if (st == RC_OK && convention == nullptr)
+      for (const AcceptableConvention& a : acceptable_conventions()) {
+        if (!a.outside_domain || !a.applies(op) || !a.relevant(op, c, want.outputs, f)) continue;
+        const bool is_declared = declared != nullptr && declared->has_convention(op.name, a.id);
+        if (a.declared_only && !is_declared) continue;
+        const std::optional<Real> alt = a.error(op, c, got, want.outputs, f);
+        if (!alt) continue;
+        const double alt_err = (*alt / eps).toDouble();
+        const ref::Verdict v = ref::clause::TOL_1_verdict(alt_err, bars_for(tc, op, c, eps));
+        if (v == ref::Verdict::fail) continue;
+        CaseVerdict acceptable{v, alt_err, "expected DOMAIN_ERROR, got OK " + got_text() + " (" + a.id + ": " + a.description + ")"};
+        acceptable.grade = Grade::acceptable;
+        acceptable.convention = a.id;
+        acceptable.declared = is_declared;
+        return acceptable;
+      }
     return status_fail(std::string("expected DOMAIN_ERROR with all outputs NaN, got ") +
                        (st == RC_OK ? "OK" : "DOMAIN_ERROR") + " " + got_text());
   }
@@ -318,7 +417,7 @@ CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Ca
   // choose is ACCEPTABLE (a pass if the table declares that convention); so is a QUALITY_WARNING
   // that is a clean PASS under one (MAT-2's −q near a half turn, off by |w| of the reference).
   for (const AcceptableConvention& a : acceptable_conventions()) {
-    if (!a.applies(op)) continue;
+    if (a.outside_domain || !a.applies(op)) continue;
     const bool is_declared = declared != nullptr && declared->has_convention(op.name, a.id);
     if (a.declared_only && !is_declared) continue;
     const std::optional<Real> alt = a.error(op, c, got, want.outputs, f);
@@ -454,6 +553,10 @@ ref::Format format_of(const rc_impl& table) {
 std::vector<std::string> claimed_clauses(const rc_impl& table) {
   std::vector<std::string> ids;
   for (int i = 0; table.clauses && table.clauses[i]; ++i) ids.emplace_back(table.clauses[i]);
+  // HYG-1 .. HYG-3 are every C-ABI table's contract, not a feature it offers: judged whether or
+  // not the table lists them (old plugins included).
+  for (const char* id : {"HYG-1", "HYG-2", "HYG-3"})
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.emplace_back(id);
   return ids;
 }
 
@@ -584,6 +687,7 @@ std::size_t search_worst(const rc_impl& table, const spec::ToleranceClass& tc, c
 
 ClauseResult run_clause(const rc_impl& table, const spec::Spec& spec, const std::string& clause_id,
                         const CaseOptions& options, const RunHooks& hooks) {
+  if (is_hygiene_clause(clause_id)) return run_hygiene_clause(table, spec, clause_id, options);
   ClauseResult result;
   result.clause = clause_id;
   const spec::Clause* cl = spec.find_clause(clause_id);

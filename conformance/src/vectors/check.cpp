@@ -26,7 +26,7 @@ engine::Observed decode(const ResultsFile& results, const ResultEntry& e, const 
   engine::Observed o;
   o.call_rc = e.call_rc;
   o.status = e.status;
-  for (const engine::Array& a : file_outputs(f.op)) {
+  for (const engine::Array& a : file_outputs(f.clause, f.op)) {
     const std::string p = e.json_path + "/out/" + a.name;
     if (!e.out.contains(a.name)) throw VectorsError(results.file, e.json_path + "/out", "missing output \"" + a.name + "\"");
     const nlohmann::json& values = e.out[a.name];
@@ -41,7 +41,7 @@ engine::Observed decode(const ResultsFile& results, const ResultEntry& e, const 
     }
     o.outputs.push_back(std::move(got));
   }
-  const auto outs = file_outputs(f.op);
+  const auto outs = file_outputs(f.clause, f.op);
   for (const auto& item : e.out.items())
     if (std::none_of(outs.begin(), outs.end(), [&](const engine::Array& a) { return a.name == item.key(); }))
       throw VectorsError(results.file, e.json_path + "/out/" + item.key(), "no output \"" + item.key() + "\" for op " + f.op);

@@ -39,6 +39,7 @@ const std::vector<std::pair<std::string, std::string>>& vocabulary() {
       {"NegativeReal", "Quaternions with w < 0 and a zero vector part, e.g. -1: the branch of the log (LOG-2)."},
       {"ZeroQuaternion", "A quaternion input equal to 0: outside the domain, DOMAIN_ERROR with NaN outputs (EDGE-6)."},
       {"ZeroRealPart", "A dual quaternion whose real part is 0: outside the domain (EDGE-6)."},
+      {"ZeroAxis", "A rotation axis equal to 0 (AXANG-2, AXIS-1): no direction, outside the domain even for angle 0 (EDGE-6)."},
       {"NaN", "A NaN among the inputs: DOMAIN_ERROR with NaN outputs (EDGE-7, EDGE-9)."},
       {"Infinity", "An infinity among the inputs: DOMAIN_ERROR with NaN outputs (EDGE-7, EDGE-9)."},
       {"Reflection", "A matrix with det < 0: no rotation is near it, DOMAIN_ERROR (MAT-3)."},
@@ -102,6 +103,8 @@ std::vector<std::string> flags_for_label(const std::string& label) {
   else if (starts_with(label, "zero quaternion in ")) f = {"ZeroQuaternion"};
   else if (starts_with(label, "quaternion of +-0 in ")) f = {"NegativeZero", "ZeroQuaternion"};
   else if (starts_with(label, "zero real part in ")) f = {"ZeroRealPart"};
+  else if (starts_with(label, "zero axis in ")) f = {"ZeroAxis"};
+  else if (starts_with(label, "axis of +-0 in ")) f = {"NegativeZero", "ZeroAxis"};
   else if (starts_with(label, "NaN in ")) f = {"NaN"};
   else if (starts_with(label, "+Inf in ") || starts_with(label, "-Inf in ")) f = {"Infinity"};
   else if (label == "reflection (det < 0)") f = {"Reflection"};

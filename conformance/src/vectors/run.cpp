@@ -63,7 +63,7 @@ ordered_json run_table(const rc_impl& table, const VectorSet& set, const std::fi
         engine::Observed o = second[i];
         if (got[i].call_rc != 0) o.call_rc = got[i].call_rc;
         if (got[i].status != RC_OK) o.status = got[i].status;
-        add(*tests[i], o, file_outputs(file.op));
+        add(*tests[i], o, file_outputs(file.clause, file.op));
       }
     }
   }

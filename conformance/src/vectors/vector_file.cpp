@@ -27,6 +27,7 @@ const char* measure_name(engine::Measure m) {
     case Measure::rotation: return "rotation";
     case Measure::quaternion: return "quaternion";
     case Measure::unit_rotation: return "unit_rotation";
+    case Measure::signed_unit_rotation: return "signed_unit_rotation";
     case Measure::canonical_rotation: return "canonical_rotation";
     case Measure::vector: return "vector";
     case Measure::point: return "point";
@@ -47,6 +48,7 @@ const char* measure_doc(engine::Measure m) {
     case Measure::rotation: return "METRIC-1: the angle in radians of the rotation between got and expected, sign-free (q and -q are one rotation)";
     case Measure::quaternion: return "max(METRIC-1, max_i |q_i - r_i| / |r|): the quaternion itself, sign and scale included (COMPOSE-1, INV-1 are defined on non-unit input)";
     case Measure::unit_rotation: return "max(METRIC-1, METRIC-6 = | |q| - 1 |): a rotation that must be a unit quaternion";
+    case Measure::signed_unit_rotation: return "max(METRIC-1, METRIC-6, max_i |q_i - r_i|): a unit quaternion whose sign is specified too (SLERP-3's endpoints a and b'), so -r costs 2";
     case Measure::canonical_rotation: return "unit_rotation, and when got . expected < 0 at least |w_expected|: the canonical sign w > 0 of MAT-2, enforced once |w| exceeds the bar";
     case Measure::vector: return "METRIC-3: |v - v_ref| / |v_ref|, absolute when |v_ref| is below the smallest normal number";
     case Measure::point: return "|p - p_ref| / max(1, |p|, |t|, ...) over the lengths of the case's inputs (rigid operations)";
@@ -108,12 +110,13 @@ int roundtrip_digits(ref::Format f) { return f == ref::Format::binary32 ? 9 : 17
 /// Digits of an expected value: the 256-bit reference, beyond either format.
 constexpr int kExpectedDigits = 20;
 
-/// Wycheproof's three results with the meaning of ACC-1: "invalid" (DOMAIN_ERROR required),
+/// Wycheproof's three results with the meaning of ACC-1: "invalid" (DOMAIN_ERROR required, no
+/// sentinel of ACC-1 acceptable: a NaN, an infinity, a reflection),
 /// "acceptable" (an informative clause, or an input where an acceptable convention can give
 /// another correct output: `acceptable` names them), "valid" (the expected output is the one
 /// correct answer up to the tolerance).
 std::string result_of(const spec::ToleranceClass& tc, ref::Status status, const std::vector<std::string>& acceptable) {
-  if (status == ref::Status::domain_error) return "invalid";
+  if (status == ref::Status::domain_error) return acceptable.empty() ? "invalid" : "acceptable";
   if (tc.kind == "informative" || !acceptable.empty()) return "acceptable";
   return "valid";
 }
@@ -122,7 +125,7 @@ std::string result_of(const spec::ToleranceClass& tc, ref::Status status, const 
 /// rotations sign-free already, or for the exact class, which admits no other output).
 std::vector<std::string> acceptable_of(const VectorFile& f, const spec::ToleranceClass& tc, const engine::Case& c) {
   if (f.round_trip() || tc.kind == "exact") return {};
-  return engine::acceptable_for_case(f.abi_op(), c, f.format);
+  return engine::acceptable_for_case(f.abi_op(), c, f.format);  // zero_sentinel also outside the domain
 }
 
 /// The reference of one vector: the op's, or for the round trip exp of log.
@@ -178,16 +181,12 @@ struct Reader {
 const char* format_name(ref::Format f) { return f == ref::Format::binary32 ? "binary32" : "binary64"; }
 const char* scalar_name(ref::Format f) { return f == ref::Format::binary32 ? "float" : "double"; }
 
-const engine::AbiOp& VectorFile::abi_op() const {
-  const engine::AbiOp* d = engine::find_abi_op(round_trip() ? "log" : op);
-  if (d == nullptr) throw std::logic_error("no ABI op " + op);
-  return *d;
-}
+const engine::AbiOp& VectorFile::abi_op() const { return engine::judged_op(clause, round_trip() ? "log" : op); }
 
-std::vector<engine::Array> file_outputs(const std::string& file_op) {
+std::vector<engine::Array> file_outputs(const std::string& clause, const std::string& file_op) {
   if (file_op == kRoundTripOp) return {engine::Array{"out_q", 4, false, engine::Measure::rotation}};
-  const engine::AbiOp* d = engine::find_abi_op(file_op);
-  return d ? d->outputs : std::vector<engine::Array>{};
+  if (engine::find_abi_op(file_op) == nullptr) return {};
+  return engine::judged_op(clause, file_op).outputs;
 }
 
 std::vector<VectorFile> build_vector_files(const spec::Spec& spec, const BuildOptions& options) {
@@ -261,7 +260,7 @@ std::string render(const spec::Spec& spec, const VectorFile& f) {
   ordered_json inputs = ordered_json::array(), outputs = ordered_json::array(), measures = ordered_json::object();
   for (const engine::Array& a : op.inputs)
     inputs.push_back({{"name", a.name}, {"stride", a.stride}, {"per_influence", a.per_influence}, {"layout", layout(f.op, a)}});
-  for (const engine::Array& a : file_outputs(f.op)) {
+  for (const engine::Array& a : file_outputs(f.clause, f.op)) {
     outputs.push_back({{"name", a.name}, {"stride", a.stride}, {"measure", measure_name(a.measure)}, {"layout", layout(f.op, a)}});
     measures[measure_name(a.measure)] = measure_doc(a.measure);
   }
@@ -335,7 +334,7 @@ std::string render(const spec::Spec& spec, const VectorFile& f) {
       in[op.inputs[a].name] = hex_dec(v.input.inputs[a], f.format, roundtrip_digits(f.format));
     t["in"] = in;
     ordered_json out = ordered_json::object();
-    const auto outs = file_outputs(f.op);
+    const auto outs = file_outputs(f.clause, f.op);
     for (std::size_t a = 0; a < outs.size(); ++a) out[outs[a].name] = hex_dec(v.expected[a], f.format, kExpectedDigits);
     t["expected"] = {{"status", ref::to_string(v.status)}, {"out", out}};
     if (tc.kind == "formula") {
@@ -431,7 +430,7 @@ VectorFile parse_vector_file(const spec::Spec& spec, const json& j, const std::f
     r.fail("/tolerance/class", "spec " + spec.version + " judges " + f.clause + " / " + f.op + " with class " + want_class +
                                    ", not " + f.tolerance);
   const spec::ToleranceClass& tc = spec.lookup(f.tolerance);
-  const auto outs = file_outputs(f.op);
+  const auto outs = file_outputs(f.clause, f.op);
 
   const json& tests = r.array(j, "tests", "");
   if (r.integer(j, "numberOfTests", "") != static_cast<std::int64_t>(tests.size()))

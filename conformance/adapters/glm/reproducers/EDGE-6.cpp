@@ -1,43 +1,39 @@
 // rotorcert reproducer, GLM 0.9.9.8 (Debian libglm-dev), clause EDGE-6.
-// EDGE-6: a zero quaternion (and a dual quaternion with a zero real part) is DOMAIN_ERROR: every
-// output component a quiet NaN (GLM has no error channel, so NaN is the only way to say it).
-// glm::normalize(0) returns the identity, a valid rotation nobody asked for; glm::log(0) returns
-// (Inf, Inf, Inf, Inf); glm::dualquat(0, t) returns the zero dual quaternion (the DQ-1 entry).
+// EDGE-6: a zero quaternion has no rotation: DOMAIN_ERROR (every output NaN, or with no status
+// channel every output non-finite), or one of ACC-1's sentinels (all zero, or exactly the
+// identity's answer: angle 0). glm::angle and glm::axis of the zero quaternion answer angle pi
+// about the axis (0, 0, 0): a finite, non-identity answer that no check can tell from a rotation
+// angle, with a zero "unit" axis. (normalize(0) = identity and log(0) = Inf are acceptable since
+// spec 2.2.0: the identity sentinel and an in-band error.)
 // Upstream: no issue found in the GLM tracker.
 // Build: g++ -std=c++20 -O1 EDGE-6.cpp   Exit: 0 defect shown, 1 not shown.
-#define GLM_ENABLE_EXPERIMENTAL  // gtx/dual_quaternion.hpp requires it
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <glm/ext/quaternion_exponential.hpp>
-#include <glm/gtx/dual_quaternion.hpp>
 
 #include <cmath>
 #include <cstdio>
 
 static_assert(GLM_VERSION == 998, "written against GLM 0.9.9.8");
 
-static bool all_nan(const glm::dquat& q) {
-  return std::isnan(q.w) && std::isnan(q.x) && std::isnan(q.y) && std::isnan(q.z);
-}
-
 int main() {
-  std::printf("rotorcert reproducer: GLM 0.9.9.8 EDGE-6: glm::normalize of the zero quaternion returns the "
-              "identity rotation instead of NaN\n");
+  std::printf("rotorcert reproducer: GLM 0.9.9.8 EDGE-6: glm::angle/glm::axis of the zero quaternion return "
+              "angle pi about the zero axis, with no error\n");
   const glm::dquat z(0.0, 0.0, 0.0, 0.0);  // (w, x, y, z)
-  const glm::dquat n = glm::normalize(z);
-  const glm::dquat l = glm::log(z);
-  const glm::tdualquat<double> d(z, glm::dvec3(1.0, 2.0, 3.0));
-  std::printf("call:    glm::normalize(q); glm::log(q); glm::dualquat(q, glm::dvec3(1, 2, 3))\n");
+  const double angle = glm::angle(z);
+  const glm::dvec3 axis = glm::axis(z);
+  std::printf("call:    glm::angle(q); glm::axis(q)\n");
   std::printf("input:   q (w, x, y, z) = (%a, %a, %a, %a)\n", z.w, z.x, z.y, z.z);
-  std::printf("library: normalize = (%a, %a, %a, %a)\n", n.w, n.x, n.y, n.z);
-  std::printf("         log       = (%a, %a, %a, %a)\n", l.w, l.x, l.y, l.z);
-  std::printf("         dualquat  = real (%a, %a, %a, %a), dual (%a, %a, %a, %a)\n", d.real.w, d.real.x, d.real.y,
-              d.real.z, d.dual.w, d.dual.x, d.dual.y, d.dual.z);
-  std::printf("correct: DOMAIN_ERROR: every component a quiet NaN (spec EDGE-6, outcome class)\n");
-  std::printf("error:   normalize answers a valid unit quaternion (the identity) for a zero input\n");
-  if (all_nan(n)) {
+  std::printf("library: angle = %a, axis = (%a, %a, %a)\n", angle, axis.x, axis.y, axis.z);
+  std::printf("correct: DOMAIN_ERROR (NaN or non-finite outputs), or the identity's answer angle 0 with a unit axis "
+              "(spec EDGE-6, ACC-1 zero_sentinel)\n");
+  const bool finite = std::isfinite(angle) && std::isfinite(axis.x) && std::isfinite(axis.y) && std::isfinite(axis.z);
+  const bool identity = angle == 0 && std::fabs(glm::length(axis) - 1) < 1e-12;
+  const bool zero = angle == 0 && axis == glm::dvec3(0);
+  if (!finite || identity || zero) {
     std::printf("DEFECT NOT SHOWN\n");
     return 1;
   }
+  std::printf("error:   a finite answer that is neither an error nor a sentinel: angle %g rad, |axis| = %g\n", angle,
+              glm::length(axis));
   return 0;
 }

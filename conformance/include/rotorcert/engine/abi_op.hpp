@@ -23,6 +23,8 @@ enum class Measure {
   quaternion,     // quaternion defined on unnormalised input (COMPOSE-1, INV-1): METRIC-1 and the
                   // componentwise relative error max_i |q_i - r_i| / |r| (scale and sign count)
   unit_rotation,  // quaternion that must be unit: METRIC-1 and METRIC-6
+  signed_unit_rotation,  // unit_rotation where the sign is specified too (SLERP-3's endpoints a and
+                         // b'): and max_i |q_i - r_i|, so -r costs 2
   canonical_rotation,  // from_matrix (MAT-2): unit_rotation, and the canonical sign (w > 0) once
                        // the reference |w| is above the bar: a wrong sign costs |w_ref|
   vector,         // METRIC-3, relative to |reference|
@@ -65,6 +67,10 @@ struct AbiOp {
 const std::vector<AbiOp>& abi_ops();
 /// The op of that name, or nullptr.
 const AbiOp* find_abi_op(const std::string& name);
+/// The op as `clause` judges it: find_abi_op(op) with the clause's own output measures where a
+/// clause specifies more than the op's measure says (SLERP-3: the sign of the endpoints). Throws
+/// std::logic_error for an unknown op.
+const AbiOp& judged_op(const std::string& clause, const std::string& op);
 
 /// The Euclidean norm of v[from .. from + n) (the elements past v's end count as absent): one
 /// quaternion, axis or real part of a dual quaternion of an input array.

@@ -25,7 +25,8 @@ struct Case {
 };
 
 struct Check {
-  std::string op;  // ABI op
+  std::string clause;  // the clause it judges
+  std::string op;      // ABI op
   std::vector<Case> cases;
   /// How the worst case is judged. Empty: by the clause's tolerance class. Otherwise the name of
   /// the class to use instead (an edge clause applied to an op with a looser class).
@@ -59,6 +60,10 @@ std::vector<Check> checks_for_clause(const spec::Spec& spec, const std::string& 
 /// Non-template core of checks_for_clause.
 std::vector<Check> checks_for_clause_impl(const spec::Spec& spec, const std::string& clause, ref::Format format,
                                           const CaseOptions& options, const std::vector<std::string>& supported_ops);
+
+/// The operation clause an ABI op belongs to (the first clause judged by that op alone, e.g.
+/// "SLERP-1" for slerp), or "" for none.
+std::string main_clause_of(const std::string& op);
 
 /// The ABI ops that can judge `clause` at all (whether or not an implementation supports them).
 std::vector<std::string> ops_for_clause(const std::string& clause);

@@ -72,6 +72,9 @@ struct AcceptableConvention {
   std::function<std::optional<Real>(const AbiOp& op, const Case& c, const Values& got, const Values& want,
                                     ref::Format f)>
       error;
+  /// Judged where the spec answers DOMAIN_ERROR (EDGE-6's zero input) and the output is OK: an
+  /// answer the spec does not give, but a correct library may (a sentinel, the algebra's value).
+  bool outside_domain = false;
 };
 const std::vector<AcceptableConvention>& acceptable_conventions();
 

@@ -34,6 +34,23 @@ const char* to_string(Outcome o);
 bool parse_outcome(const std::string& code, Outcome& out);
 
 /// What an implementation gave back for one case.
+/// One batch call as raw bytes (HYG-1 .. HYG-3): every input array before and after the call and
+/// every output array and the status bytes after it, in the table's scalar type.
+struct RawCall {
+  int call_rc = 0;
+  std::size_t scalar_size = 8;                       // sizeof(float) or sizeof(double)
+  std::vector<std::vector<unsigned char>> in_before, in_after, out;
+  std::vector<std::uint8_t> status;                  // one per element
+  /// Output array a of element i as exact values.
+  std::vector<Real> output(const AbiOp& op, std::size_t a, std::size_t i) const;
+  /// Input array a of element i (k influences per element for n-way inputs) as exact values,
+  /// before (after = false) or after the call.
+  std::vector<Real> input(const AbiOp& op, std::size_t a, std::size_t i, std::size_t k, bool after) const;
+  /// Whether element i's outputs and status are bit for bit those of element j of `other`.
+  bool same_element(const AbiOp& op, std::size_t i, const RawCall& other, std::size_t j) const;
+};
+RawCall call_raw(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases, std::size_t k);
+
 struct Observed {
   int call_rc = 0;              // the batch call's return value; nonzero: the call as a whole failed
   std::uint8_t status = RC_OK;  // the element's status byte (RESULT-2)
@@ -197,7 +214,7 @@ std::vector<std::string> detect_conventions(const rc_impl& table, const spec::Sp
 void detect_conventions(const rc_impl& table, const spec::Spec& spec, const std::string& clause,
                         const CaseOptions& options, ClauseResult& result);
 
-/// The clause IDs a table claims.
+/// The clause IDs a table claims: its rc_impl.clauses, and the hygiene clauses (HYG-*) always.
 std::vector<std::string> claimed_clauses(const rc_impl& table);
 
 }  // namespace rotorcert::engine

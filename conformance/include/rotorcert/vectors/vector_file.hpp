@@ -58,8 +58,9 @@ struct VectorFile {
 const char* format_name(ref::Format f);    // "binary32" / "binary64"
 const char* scalar_name(ref::Format f);    // "float" / "double"
 
-/// Output arrays of a file op (for the round trip: out_q, the result of exp(log q)).
-std::vector<engine::Array> file_outputs(const std::string& file_op);
+/// Output arrays of a file op as `clause` judges them (engine::judged_op; for the round trip: out_q,
+/// the result of exp(log q)).
+std::vector<engine::Array> file_outputs(const std::string& clause, const std::string& file_op);
 
 struct BuildOptions {
   std::uint64_t seed = 1;
