@@ -326,6 +326,19 @@ std::vector<AcceptableConvention> build_conventions() {
                    if (alt.status != ref::Status::ok) return std::nullopt;
                    return output_error(op, got, alt.outputs, c, f);
                  }});
+  // SLERP-3: the endpoints are a and b' to the sign; -a at t = 0 or -b' at t = 1 is the same
+  // rotation, a sign a library may choose (CQRlib's HLERP, pyquaternion), as it may inside.
+  all.push_back({"endpoint_sign", "slerp returns -a at t = 0 or -b' at t = 1: the same rotation with the other sign", false,
+                 is("slerp"),
+                 [](const AbiOp&, const Case& c, const Values&, ref::Format) {
+                   return c.inputs.size() > 2 && !c.inputs[2].empty() && (c.inputs[2][0] == 0 || c.inputs[2][0] == 1);
+                 },
+                 [](const AbiOp& op, const Case& c, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   if (op.outputs[0].measure != Measure::signed_unit_rotation) return std::nullopt;  // SLERP-3 only
+                   if (c.inputs.size() < 3 || c.inputs[2].empty() || (c.inputs[2][0] != 0 && c.inputs[2][0] != 1))
+                     return std::nullopt;
+                   return unit_rotation_error(got[0], quat(want[0]));
+                 }});
   // Declared only: an interpolation documented as oriented (no hemisphere flip: glm::mix) goes
   // from a to b itself, the long arc where a.b < 0. Undefined at an exact antipode.
   all.push_back({"oriented", "the interpolation is oriented: from a to b itself, no hemisphere flip (declared)", true, pairwise,
