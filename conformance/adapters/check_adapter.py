@@ -8,8 +8,9 @@ Runs `rotorcert thirdparty --adapter NAME --out DIR` (REPORT-3) and reads DIR/re
     expected_failures.json FAIL, every other claimed clause passes (or is NOT_SUPPORTED) -- and
     every defect states its worst input and error and has a reproducer file; prints the
     certificate's defects either way;
-  - not run because its registry package could not be installed (scripts/setup-adapters recorded
-    the failure in ENV/NAME/status.json): exit 77, a skip, with the installer's reason;
+  - not run because its registry package could not be installed or its Rust crate could not be
+    built (scripts/setup-adapters recorded the failure in ENV/NAME/status.json: no cargo, no
+    network, ...): exit 77, a skip, with the installer's reason;
   - anything else (not run for another reason, the adapter failed, not as expected): exit 1.
 """
 import argparse
@@ -49,7 +50,10 @@ def main(argv):
     if lib["status"] == "not run":
         env_dir = args.env or report["sections"]["third_party"]["environments"]
         status_file = os.path.join(env_dir, args.adapter, "status.json")
-        if lib["route"] == "vectors" and os.path.isfile(status_file):
+        # The adapters scripts/setup-adapters installs: every vectors adapter, and the Rust plugins
+        # it builds with cargo (thirdparty::Manifest::uses_environment).
+        uses_env = lib["route"] == "vectors" or lib.get("language") == "rust"
+        if uses_env and os.path.isfile(status_file):
             with open(status_file) as f:
                 status = json.load(f)
             if not status.get("installed") and status.get("reason"):

@@ -1,15 +1,24 @@
 # Reproducers of known third-party defects (README.md, "Reproducers"): one file per library and
-# clause, conformance/adapters/<adapter>/reproducers/<CLAUSE>.<cpp|py|js>, each calling the library
+# clause, conformance/adapters/<adapter>/reproducers/<CLAUSE>.<cpp|py|js|rs>, each calling the library
 # directly. Every file becomes the ctest reproducer_<adapter>_<CLAUSE> (label `reproducer`): exit 0
 # = the defect is shown (PASS), 1 = it is not shown any more (FAIL: the library changed, update the
 # known defects), 77 = the library cannot be loaded here (SKIP). Included by CMakeLists.txt of this
-# directory, after find_package(CQRlib).
+# directory, after it looked for CQRlib, assimp and Bullet.
 
 # C++: the library behind each adapter's reproducers, and whether it was found. glm and Eigen3 are
-# required by the top-level CMakeLists.txt; CQRlib is optional (CQRlib_FOUND above).
+# required by the top-level CMakeLists.txt; CQRlib, assimp and Bullet are optional (CMakeLists.txt
+# above). Bullet's reproducers build against Debian's default build (bullet.pc, btScalar = float).
 set(_repro_cxx_libs_glm glm::glm)
 set(_repro_cxx_libs_eigen Eigen3::Eigen)
 set(_repro_cxx_libs_cqrlib CQRlib::CQRlib)
+set(_repro_cxx_libs_assimp assimp::assimp)
+set(_repro_cxx_libs_bullet Bullet::bullet)
+# Further builds of a library that its reproducers also run against, each a ctest
+# reproducer_<adapter>_<CLAUSE>_<variant>: Debian ships Bullet twice, and the plugin certifies both
+# (bullet.pc, btScalar = float, above; bullet-float64.pc, -DBT_USE_DOUBLE_PRECISION, here). Each
+# reproducer picks the suite's worst input of the build it was compiled for.
+set(_repro_cxx_variants_bullet float64)
+set(_repro_cxx_libs_bullet_float64 Bullet::bullet_float64)
 
 # Python and JavaScript run from the environments of scripts/setup-adapters: $ROTORCERT_ADAPTERS_ENV
 # at test time, else build/adapters of this checkout (as `rotorcert thirdparty`). A missing
@@ -46,10 +55,39 @@ set(_repro_skip [=[
 echo "reproducer skipped: $1"
 exit 77]=])
 
+# Rust: each NAME/reproducers/CLAUSE.rs is an example target of the adapter's Cargo crate (listed
+# in NAME/Cargo.toml), built with cargo against the crate version its committed Cargo.lock pins, in
+# the target directory scripts/setup-adapters built the adapter in ($env/NAME/target), --frozen: no
+# fetching, no re-resolution at test time. cargo missing at configure time, or the adapter's
+# environment not installed (status.json), is a skip (77); a reproducer that does not build is a
+# failure (2), never a skip.
+find_program(ROTORCERT_CARGO_EXECUTABLE NAMES cargo DOC "cargo, for the Rust reproducers")
+mark_as_advanced(ROTORCERT_CARGO_EXECUTABLE)
+# sh -c SCRIPT sh DEFAULT_ENV ADAPTER CARGO_TOML EXAMPLE CARGO
+set(_repro_run_rs [=[
+env="${ROTORCERT_ADAPTERS_ENV:-$1}"
+if [ ! -x "$5" ]
+then
+  echo "reproducer skipped: cargo was not found at configure time"
+  exit 77
+fi
+if ! grep -q '"installed": true' "$env/$2/status.json" 2>/dev/null
+then
+  echo "reproducer skipped: $2 is not installed in $env (run scripts/setup-adapters; $env/$2/status.json)"
+  exit 77
+fi
+if ! "$5" build --quiet --release --frozen --manifest-path "$3" --target-dir "$env/$2/target" --example "$4"
+then
+  echo "reproducer FAILED: cargo could not build the example $4 of $3"
+  exit 2
+fi
+exec "$env/$2/target/release/examples/$4"]=])
+
 file(GLOB _repro_files CONFIGURE_DEPENDS
   ${CMAKE_CURRENT_SOURCE_DIR}/*/reproducers/*.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/*/reproducers/*.py
-  ${CMAKE_CURRENT_SOURCE_DIR}/*/reproducers/*.js)
+  ${CMAKE_CURRENT_SOURCE_DIR}/*/reproducers/*.js
+  ${CMAKE_CURRENT_SOURCE_DIR}/*/reproducers/*.rs)
 list(SORT _repro_files)
 foreach(_file IN LISTS _repro_files)
   get_filename_component(_dir ${_file} DIRECTORY)
@@ -81,7 +119,22 @@ foreach(_file IN LISTS _repro_files)
                                                 OUTPUT_NAME ${_adapter}_${_clause})
       rotorcert_warnings(${_name})
       add_test(NAME ${_name} COMMAND ${_name})
+      foreach(_variant IN LISTS _repro_cxx_variants_${_adapter})
+        set(_vname ${_name}_${_variant})
+        add_executable(${_vname} ${_file})
+        target_link_libraries(${_vname} PRIVATE ${_repro_cxx_libs_${_adapter}_${_variant}})
+        set_target_properties(${_vname} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/reproducers
+                                                   OUTPUT_NAME ${_adapter}_${_clause}_${_variant})
+        rotorcert_warnings(${_vname})
+        add_test(NAME ${_vname} COMMAND ${_vname})
+        set_tests_properties(${_vname} PROPERTIES LABELS reproducer SKIP_RETURN_CODE 77 TIMEOUT 120)
+      endforeach()
     endif()
+  elseif(_ext STREQUAL ".rs")
+    add_test(NAME ${_name}
+      COMMAND sh -c "${_repro_run_rs}" sh "${_repro_env_default}" ${_adapter} ${_dir}/Cargo.toml ${_clause}
+              "${ROTORCERT_CARGO_EXECUTABLE}")
+    set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED adapters_env)
   elseif(_ext STREQUAL ".py")
     add_test(NAME ${_name} COMMAND sh -c "${_repro_run_py}" sh "${_repro_env_default}" ${_adapter} ${_file})
     set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED adapters_env)

@@ -72,6 +72,8 @@ std::vector<Manifest> load_manifests(const fs::path& adapters_dir) {
       if (e.is_object() && e.contains("plugin")) m.plugin = e.at("plugin");
       if (m.builtin.empty() == m.plugin.empty())
         throw std::runtime_error(file.string() + ": /entry of route abi needs exactly one of builtin and plugin");
+      if (m.language == "rust" && m.plugin.empty())
+        throw std::runtime_error(file.string() + ": /entry of a Rust adapter is {\"plugin\": STEM} (its Cargo crate builds STEM.so)");
     } else if (m.route == "vectors") {
       text_field(j, file, "entry");
       if (m.scalars.size() != 1) throw std::runtime_error(file.string() + ": a vectors adapter answers one number format");
@@ -96,7 +98,15 @@ Environment read_environment(const fs::path& env_dir, const std::string& name) {
     const json j = read_json(file);
     env.installed = j.value("installed", false);
     env.reason = j.value("reason", json()).is_string() ? j.at("reason").get<std::string>() : "";
-    if (env.installed) {
+    if (env.installed && j.contains("plugin") && j.at("plugin").is_string()) {
+      // A plugin the environment built (a Rust adapter): the file must still be there.
+      env.plugin = j.at("plugin").get<std::string>();
+      if (env.plugin.empty() || !fs::exists(env.plugin)) {
+        env.installed = false;
+        env.reason = "the plugin recorded in " + file.string() + " (" + env.plugin.string() +
+                     ") is gone (run scripts/setup-adapters)";
+      }
+    } else if (env.installed) {
       env.command = j.at("command").get<std::vector<std::string>>();
       const json vars = j.value("env", json::object());  // named: items() must not outlive it
       for (const auto& [k, v] : vars.items()) env.env.emplace_back(k, v.get<std::string>());

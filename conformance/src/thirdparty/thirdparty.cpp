@@ -114,7 +114,7 @@ void attach_reproducers(Library& lib, const std::vector<json>& listed) {
     std::string file;
     if (const auto it = named.find(d.scalar + "/" + clause); it != named.end()) file = it->second;
     else
-      for (const char* ext : {".cpp", ".py", ".js"})
+      for (const char* ext : {".cpp", ".py", ".js", ".rs"})
         if (fs::exists(m.dir / "reproducers" / (clause + ext))) file = clause + ext;
     d.reproducer.reset();
     if (file.empty() || !fs::exists(m.dir / "reproducers" / file)) continue;
@@ -123,11 +123,16 @@ void attach_reproducers(Library& lib, const std::vector<json>& listed) {
     const fs::path root = m.dir.parent_path().parent_path().parent_path();
     const fs::path path = (m.dir / "reproducers" / file).lexically_relative(root);
     const std::string stem = fs::path(file).stem().string(), ext = fs::path(file).extension().string();
+    // Rust: an example target of the adapter's crate (its Cargo.toml lists reproducers/*.rs), built
+    // against the pinned crate in the target directory scripts/setup-adapters made.
+    const std::string crate = (m.dir / "Cargo.toml").lexically_relative(root).string();
     std::string run = ext == ".py" ? "build/adapters/" + m.name + "/venv/bin/python " + path.string()
                       : ext == ".js" ? "NODE_PATH=build/adapters/" + m.name + "/node_modules node " + path.string()
+                      : ext == ".rs" ? "cargo run --quiet --release --locked --manifest-path " + crate + " --target-dir build/adapters/" +
+                                           m.name + "/target --example " + stem
                                      : "ctest --preset default -R '^reproducer_" + m.name + "_" + stem + "$' -V";
-    d.reproducer = Reproducer{path.string(), ext == ".cpp" ? "C++" : ext == ".py" ? "Python" : "JavaScript", run,
-                              "reproducer_" + m.name + "_" + stem};
+    const char* language = ext == ".cpp" ? "C++" : ext == ".py" ? "Python" : ext == ".rs" ? "Rust" : "JavaScript";
+    d.reproducer = Reproducer{path.string(), language, run, "reproducer_" + m.name + "_" + stem};
   }
 }
 
@@ -268,11 +273,29 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
         slots.push_back({i, scalar});
         continue;
       }
-      const fs::path path = o.plugin_dir / (m.plugin + ".so");
-      if (!fs::exists(path)) {
-        libs[i].reason = "the plugin " + path.string() + " was not built: its library was not found when the build was " +
-                         "configured (scripts/bootstrap installs it; then cmake --preset default again)";
-        break;
+      // A C or C++ plugin comes from the build (--plugins); a Rust one from the environment
+      // scripts/setup-adapters built it in (cargo), named by its status.json.
+      fs::path path;
+      if (m.uses_environment()) {
+        const Environment env = read_environment(o.env_dir, m.name);
+        if (!env.installed) {
+          libs[i].reason = env.reason;
+          break;
+        }
+        path = env.plugin;
+        if (path.empty()) {
+          libs[i].status = LibraryStatus::error;
+          libs[i].reason = "the environment of " + m.name + " (" + (o.env_dir / m.name / "status.json").string() +
+                           ") names no plugin (run scripts/setup-adapters " + m.name + ")";
+          break;
+        }
+      } else {
+        path = o.plugin_dir / (m.plugin + ".so");
+        if (!fs::exists(path)) {
+          libs[i].reason = "the plugin " + path.string() + " was not built: its library was not found when the build was " +
+                           "configured (scripts/bootstrap installs it; then cmake --preset default again)";
+          break;
+        }
       }
       try {
         bool found = false;

@@ -14,8 +14,11 @@
 namespace rotorcert::thirdparty {
 
 /// adapter.json. Route "abi": the library is a C-ABI table, built in (`builtin`, a table name of
-/// `rotorcert list`) or a plugin (`plugin`, the file stem under the build's adapter_plugins/). Route
-/// "vectors": a program in another language that reads exported vectors and writes a results file.
+/// `rotorcert list`) or a plugin (`plugin`, the file stem): a C or C++ plugin is built by the
+/// project's build (under its adapter_plugins/), a Rust one ("language": "rust", a Cargo crate in
+/// the adapter's directory) by scripts/setup-adapters into the adapter's environment, which names
+/// the file in its status.json. Route "vectors": a program in another language that reads exported
+/// vectors and writes a results file.
 struct Manifest {
   std::filesystem::path dir;  // conformance/adapters/NAME
   std::string name;           // certificate name; the directory's name
@@ -23,18 +26,23 @@ struct Manifest {
   std::string builtin, plugin;       // route abi: exactly one set
   std::vector<std::string> scalars;  // "float", "double"
   nlohmann::json raw;                // the whole manifest, shown in the report
+  /// Whether scripts/setup-adapters makes what runs it (ENV/NAME/status.json): a vectors adapter's
+  /// interpreter and packages, a Rust plugin's build.
+  bool uses_environment() const { return route == "vectors" || language == "rust"; }
 };
 
 /// Every manifest under `adapters_dir`, sorted by name. Throws std::runtime_error naming the file
 /// and the field for a malformed manifest (a usage error of the tool: exit 2).
 std::vector<Manifest> load_manifests(const std::filesystem::path& adapters_dir);
 
-/// ENV/NAME/status.json of a vectors adapter, as scripts/setup-adapters wrote it.
+/// ENV/NAME/status.json of an adapter that scripts/setup-adapters installs (Manifest::uses_environment),
+/// as it wrote it.
 struct Environment {
   bool installed = false;
   std::string reason;                        // why not installed
-  std::vector<std::string> command;          // interpreter and script; the tool appends --vectors, --out
+  std::vector<std::string> command;          // vectors: interpreter and script; the tool appends --vectors, --out
   std::vector<std::pair<std::string, std::string>> env;  // extra environment variables (NODE_PATH)
+  std::filesystem::path plugin;              // route abi (Rust): the plugin it built
 };
 
 /// The environment of `name` under `env_dir`; not installed, with the reason, when setup-adapters

@@ -1,7 +1,9 @@
 // Certifying third-party libraries (spec REPORT-3): every adapter of conformance/adapters/ is
 // certified by the route it declares, and the results become the report's third-party section.
 //   route abi, built in:   certify::certify_targets on the table (GLM, Eigen);
-//   route abi, plugin:     the same on the plugin the build made (cqrlib);
+//   route abi, plugin:     the same on the plugin the build made (cqrlib), or, for a Rust adapter,
+//                          the one scripts/setup-adapters built with cargo in its environment
+//                          (glam, nalgebra);
 //   route vectors:         vectors exported with the run's seed and cases, the adapter run on them
 //                          in its own environment (scripts/setup-adapters), its results file graded
 //                          by vectors::grade (clifford, kingdon, ganja.js).
@@ -30,7 +32,7 @@ inline constexpr int kListedAtCases = 64;
 struct Options {
   std::filesystem::path adapters_dir;  // conformance/adapters
   std::filesystem::path env_dir;       // where scripts/setup-adapters installed the environments
-  std::filesystem::path plugin_dir;    // the build's adapter_plugins/
+  std::filesystem::path plugin_dir;    // the build's adapter_plugins/ (C and C++ plugins; Rust ones are in env_dir)
   std::filesystem::path out;           // vectors/, NAME/results.json, NAME/adapter.log go here
   std::vector<std::string> names;      // only these adapters (empty: all)
   certify::CertifyOptions certify;     // seed, cases, clauses, limits, jobs (both routes)
@@ -46,7 +48,7 @@ using KnownCertificates = std::map<std::string, certify::Certificate>;
 /// conformance/adapters/NAME/reproducers/FILE, the command that runs it and its ctest.
 struct Reproducer {
   std::string file;      // relative to the checkout
-  std::string language;  // "C++", "Python", "JavaScript"
+  std::string language;  // "C++", "Python", "JavaScript", "Rust"
   std::string run, ctest;
 };
 

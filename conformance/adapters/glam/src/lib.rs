@@ -1,0 +1,106 @@
+// rotorcert adapter for glam (https://github.com/bitshifter/glam-rs), the crate version pinned in
+// Cargo.toml / Cargo.lock, built with its default features (std, all-types; not `glam-assert`, so
+// the documented "Will panic if ... is not normalized when glam_assert is enabled" assertions are
+// compiled out, as in every default build of a glam user).
+//
+// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 2) with
+// two tables named "glam": index 0 binary32 (glam::Quat, Vec3, Mat3; Quat is glam's SSE2 type on
+// x86_64), index 1 binary64 (glam::DQuat, DVec3, DMat3). scripts/setup-adapters builds it with
+// `cargo build --release --locked` into the adapter's environment; `rotorcert thirdparty` loads
+// it from there. The ops are in ops.rs, the ABI and the panic boundary in abi.rs; every convention
+// mapping and declaration is stated in adapter.json.
+
+mod abi;
+
+use abi::*;
+
+pub mod f32 {
+    pub type S = f32;
+    pub type Q = glam::Quat;
+    pub type V = glam::Vec3;
+    pub type M = glam::Mat3;
+    include!("ops.rs");
+}
+
+pub mod f64 {
+    pub type S = f64;
+    pub type Q = glam::DQuat;
+    pub type V = glam::DVec3;
+    pub type M = glam::DMat3;
+    include!("ops.rs");
+}
+
+/// Clauses whose operations glam has (no bivectors, trivectors, blends, dual quaternions or
+/// skinning: those levels are not claimed).
+static CLAUSES: StrList<29> = str_list![
+    // Core (APPLY-2, APPLY-3: glam has no bivectors or trivectors)
+    "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
+    // Interp
+    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
+    // Robust (EDGE-9 judges weighted ops only)
+    "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8",
+];
+
+/// DECL-1, glam's documentation (doc comments of src/f32/sse2/quat.rs and src/f64/dquat.rs, the
+/// same text; citations in adapter.json).
+static PRECONDITIONS: StrList<9> = str_list![
+    "inverse:unit_quaternion",
+    "apply_vector:unit_quaternion",
+    "to_matrix:unit_quaternion",
+    "from_matrix:rotation_matrix",
+    "from_axis_angle:unit_axis",
+    "slerp:unit_quaternion",
+    "nlerp:unit_quaternion",
+    "exp:finite",
+];
+
+/// Conventions glam chose where the spec allows several answers (citations in adapter.json).
+static CONVENTIONS: StrList<3> = str_list!["from_matrix:sign", "to_axis_angle:identity_axis"];
+
+const LEVELS: u32 = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_ROBUST;
+/// The version string of both tables: the pinned crate and how it is built.
+macro_rules! version {
+    () => {
+        "glam 0.34.3 (default features: std, all-types; no glam-assert)"
+    };
+}
+
+static TABLE_F32: Impl = Impl {
+    abi_version: RC_ABI_VERSION,
+    name: cstr!("glam"),
+    version: cstr!(version!()),
+    description: cstr!("glam 0.34.3 glam::Quat (binary32, SSE2 on x86_64), Vec3, Mat3; see adapter.json"),
+    scalar: RC_SCALAR_FLOAT32,
+    levels: LEVELS,
+    clauses: CLAUSES.0.as_ptr(),
+    f32: &f32::OPS,
+    f64: std::ptr::null(),
+    simd_targets: std::ptr::null(),
+    select_target: None,
+    current_target: None,
+    preconditions: PRECONDITIONS.0.as_ptr(),
+    conventions: CONVENTIONS.0.as_ptr(),
+};
+
+static TABLE_F64: Impl = Impl {
+    abi_version: RC_ABI_VERSION,
+    name: cstr!("glam"),
+    version: cstr!(version!()),
+    description: cstr!("glam 0.34.3 glam::DQuat (binary64), DVec3, DMat3; see adapter.json"),
+    scalar: RC_SCALAR_FLOAT64,
+    levels: LEVELS,
+    clauses: CLAUSES.0.as_ptr(),
+    f32: std::ptr::null(),
+    f64: &f64::OPS,
+    simd_targets: std::ptr::null(),
+    select_target: None,
+    current_target: None,
+    preconditions: PRECONDITIONS.0.as_ptr(),
+    conventions: CONVENTIONS.0.as_ptr(),
+};
+
+/// The entry point a rotorcert plugin exports (RC_IMPL_ENTRY_SYMBOL).
+#[no_mangle]
+pub extern "C" fn rotorcert_impl_entry(abi_version: u32, index: u32) -> *const Impl {
+    entry(abi_version, index, &[&TABLE_F32, &TABLE_F64])
+}
