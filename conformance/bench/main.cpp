@@ -2,10 +2,12 @@
 // baselines and the roofline (README.md in this directory). Our flags (options.hpp) are taken
 // out first; Google Benchmark parses the rest.
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <rotorcert/registry.hpp>
 
 #include "frame_bench.hpp"
 #include "inputs.hpp"
@@ -52,9 +54,23 @@ int main(int argc, char** argv) {
   benchmark::AddCustomContext("rotorcert_transcendental_flops", std::to_string(static_cast<int>(kTranscendentalFlops)));
   benchmark::AddCustomContext("hwy_target", roofline::target_name());
 
+  // Third-party plugins (rotorcert thirdparty --speed): their tables are timed in this run, beside
+  // the built-in GLM table they are compared with. A plugin that does not load is a usage error.
+  std::vector<std::unique_ptr<rotorcert::impl::Plugin>> plugins;
+  std::vector<const rc_impl*> plugin_tables;
+  for (const std::string& path : o.plugins) {
+    try {
+      plugins.push_back(rotorcert::impl::Plugin::load(path));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "rotorcert_bench: --plugin=%s: %s\n", path.c_str(), e.what());
+      return 2;
+    }
+    for (const rc_impl* t : plugins.back()->tables()) plugin_tables.push_back(t);
+  }
+
   register_roofline(config);
   register_baselines(config);
-  register_op_benchmarks(config);
+  register_op_benchmarks(config, plugin_tables);
   register_frame_benchmarks(config, o.quick);
 
   std::vector<char*> args;

@@ -115,8 +115,10 @@ void register_table(const rc_impl& table, const Ops& ops, const RunConfig& confi
 
 }  // namespace
 
-void register_op_benchmarks(const RunConfig& config) {
-  for (const rc_impl* t : impl::builtin_tables()) {
+void register_op_benchmarks(const RunConfig& config, const std::vector<const rc_impl*>& extra) {
+  std::vector<const rc_impl*> tables = impl::builtin_tables();
+  tables.insert(tables.end(), extra.begin(), extra.end());
+  for (const rc_impl* t : tables) {
     if (t->scalar == RC_SCALAR_FLOAT32 && t->f32 != nullptr) register_table<float>(*t, *t->f32, config);
     if (t->scalar == RC_SCALAR_FLOAT64 && t->f64 != nullptr) register_table<double>(*t, *t->f64, config);
   }

@@ -36,6 +36,9 @@ CommandLine parse_command_line(int argc, char** argv) {
       o.quick = true;
     } else if (a.starts_with("--sizes=")) {
       if (!parse_sizes(a.substr(8), o.sizes)) cl.error = "bad --sizes (want N[,N...], N > 0): " + std::string(a);
+    } else if (a.starts_with("--plugin=")) {
+      if (a.size() == 9) cl.error = "bad --plugin (want --plugin=PATH)";
+      o.plugins.emplace_back(a.substr(9));
     } else if (a.starts_with("--stream-mib=")) {
       std::size_t mib = 0;
       if (!parse_size(a.substr(13), mib)) cl.error = "bad --stream-mib (want N > 0): " + std::string(a);
@@ -69,7 +72,8 @@ std::string usage() {
              "  --quick           sizes 64 and 4096 and the quick min time\n"
              "  --sizes=N[,N...]  batch sizes (default 1,64,4096,65536; >= 65536 streams from memory)\n"
              "  --stream-mib=N    bytes a streaming benchmark cycles through (default: 2 x last-level\n"
-             "                    cache, at least 64 MiB)\n") +
+             "                    cache, at least 64 MiB)\n"
+             "  --plugin=PATH     also time every table of this C-ABI plugin (op/<op>/<table>/...); repeatable\n") +
          min_times;
 }
 

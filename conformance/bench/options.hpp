@@ -25,6 +25,7 @@ struct Options {
   std::size_t stream_bytes = 0;  // bytes a streaming benchmark cycles through; 0 = machine default
   double min_time = kDefaultMinTime;
   bool min_time_given = false;  // --benchmark_min_time was on the command line
+  std::vector<std::string> plugins;  // --plugin=PATH: third-party tables timed beside the built-in ones
 };
 
 struct CommandLine {

@@ -55,6 +55,7 @@ int run_bench(const BenchRequest& r, const char* who, nlohmann::json& bench_json
   std::vector<std::string> args = {binary, "--benchmark_out=" + partial.string(), "--benchmark_out_format=json"};
   if (r.quick) args.push_back("--quick");
   if (!r.filter.empty()) args.push_back("--benchmark_filter=" + r.filter);
+  for (const std::string& p : r.plugins) args.push_back("--plugin=" + p);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -200,6 +200,7 @@ int run(const Args& a) {
     ThirdPartyRequest request = a.third_party;
     request.out = (std::filesystem::path(a.common.out) / "third_party").string();
     request.quiet = a.common.quiet;
+    request.speed = !a.no_bench;  // the native libraries timed beside GLM, as the speed section is
     certify::json section;
     const int rc = run_third_party(request, spec, options, known, "rotorcert report: third-party", third_party, section);
     if (rc == kExitUsage) return kExitUsage;

@@ -6,14 +6,20 @@
 // GLM and Eigen), 1 otherwise (a library not as expected, an adapter that failed to run), 2 on
 // usage. A library whose adapter cannot run here (package not installable, plugin not built) is
 // "not run" with the reason and does not change the exit code.
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <set>
+#include <tuple>
 
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/certify/verdict.hpp>
+#include <rotorcert/engine/abi_op.hpp>
 #include <rotorcert/spec/data_layout.hpp>
 #include <rotorcert/thirdparty/thirdparty.hpp>
 
@@ -52,7 +58,103 @@ int run_third_party(const ThirdPartyRequest& r, const spec::Spec& spec, const ce
     return kExitUsage;
   }
   section = thirdparty::section_json(outcome, o);
+  if (r.speed) add_third_party_speed(r, outcome, who, section);
   return outcome.as_expected() ? kExitOk : kExitFailed;
+}
+
+namespace {
+
+/// The bench name's fields: op/<op>/<table>/<scalar>/<n>.
+std::vector<std::string> name_fields(const std::string& name) {
+  std::vector<std::string> f;
+  std::size_t from = 0;
+  for (std::size_t at; (at = name.find('/', from)) != std::string::npos; from = at + 1) f.push_back(name.substr(from, at - from));
+  f.push_back(name.substr(from));
+  return f;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+}  // namespace
+
+void add_third_party_speed(const ThirdPartyRequest& r, const thirdparty::Outcome& outcome, const char* who,
+                           nlohmann::json& section) {
+  constexpr int kElements = 4096;
+  constexpr const char* kBaseline = "glm_quat";
+  // The native tables: every certificate of a C-ABI library (plugins, and GLM/Eigen built in).
+  std::set<std::string> tables = {kBaseline}, plugins;
+  for (const thirdparty::Library& lib : outcome.libraries) {
+    if (lib.manifest.route != "abi" || lib.status != thirdparty::LibraryStatus::certified) continue;
+    for (const certify::Certificate& c : lib.certificates) {
+      tables.insert(c.table.name);
+      if (!c.table.plugin_path.empty()) plugins.insert(c.table.plugin_path);
+    }
+  }
+  if (tables.size() == 1) {
+    section["speed"] = {{"note", "no native (C-ABI) library was certified in this run"}};
+    return;
+  }
+  BenchRequest bench;
+  bench.out = (std::filesystem::path(r.out) / "speed").string();
+  bench.quick = true;
+  bench.binary = r.bench_binary;
+  bench.plugins.assign(plugins.begin(), plugins.end());
+  std::string alternatives;
+  for (const std::string& t : tables) alternatives += (alternatives.empty() ? "" : "|") + t;
+  bench.filter = "^op/[^/]+/(" + alternatives + ")/(float|double)/" + std::to_string(kElements) + "$";
+  if (!r.quiet) std::cout << who << ": timing " << tables.size() - 1 << " native table(s) against " << kBaseline << " ...\n" << std::flush;
+  nlohmann::json out;
+  if (run_bench(bench, who, out) != kExitOk) {
+    section["speed"] = {{"note", "the benchmark run failed; its log is " + (std::filesystem::path(bench.out) / "bench.log").string()}};
+    return;
+  }
+  // ns per element of one batch call, by (table, scalar, op).
+  std::map<std::tuple<std::string, std::string, std::string>, double> ns;
+  for (const nlohmann::json& b : out.value("benchmarks", nlohmann::json::array())) {
+    const auto f = name_fields(b.value("name", ""));
+    if (f.size() != 5 || f[0] != "op" || !b.contains("ns_per_element") || !b["ns_per_element"].is_number()) continue;
+    ns[{f[2], f[3], f[1]}] = b["ns_per_element"].get<double>();
+  }
+  const std::string cpu = out.contains("context") ? out["context"].value("cpu_model", "") : "";
+  section["speed"] = {{"baseline", kBaseline}, {"elements", kElements}, {"cpu", cpu},
+                      {"bench_json", (std::filesystem::path(bench.out) / "bench.json").string()},
+                      {"note", "ns per element of one batch call of " + std::to_string(kElements) +
+                                   " valid elements through the C ABI (the adapter's conversions, and a Rust adapter's per-element panic guard, included), measured in the same run as " + kBaseline +
+                                   "'s same op and scalar; ratio = library / " + kBaseline + " (below 1: faster)"}};
+  for (nlohmann::json& lib : section["libraries"]) {
+    const auto it = std::find_if(outcome.libraries.begin(), outcome.libraries.end(),
+                                 [&](const thirdparty::Library& l) { return l.manifest.name == lib.value("name", ""); });
+    if (it == outcome.libraries.end() || it->manifest.route != "abi") continue;
+    nlohmann::json per_table = nlohmann::json::array();
+    for (const certify::Certificate& c : it->certificates) {
+      nlohmann::json ops = nlohmann::json::array();
+      std::vector<double> ratios;
+      for (const engine::AbiOp& op : engine::abi_ops()) {
+        const auto own = ns.find({c.table.name, c.table.scalar, op.name});
+        if (own == ns.end()) continue;
+        const auto base = ns.find({kBaseline, c.table.scalar, op.name});
+        nlohmann::json o = {{"op", op.name}, {"ns_per_element", own->second}};
+        if (base != ns.end() && base->second > 0) {
+          o["baseline_ns_per_element"] = base->second;
+          o["ratio"] = own->second / base->second;
+          ratios.push_back(own->second / base->second);
+        }
+        ops.push_back(o);
+      }
+      if (ops.empty()) continue;
+      nlohmann::json t = {{"table", c.table.name}, {"scalar", c.table.scalar}, {"ops", ops}};
+      if (!ratios.empty()) {
+        t["median_ratio"] = median(ratios);
+        t["ops_compared"] = ratios.size();
+      }
+      per_table.push_back(t);
+    }
+    if (!per_table.empty()) lib["speed"] = per_table;
+  }
 }
 
 void print_third_party_summary(std::ostream& out, const thirdparty::Outcome& outcome) {
@@ -127,6 +229,10 @@ Command add_thirdparty(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "thirdparty", "Certify the third-party libraries of conformance/adapters (C ABI and JSON-vector adapters)");
   app->add_option("--adapter", args->request.names, "Only this adapter (e.g. clifford); repeatable");
+  app->add_flag("--speed", args->request.speed,
+                "Also time every native (C-ABI) library's ops against glm_quat in one benchmark run (4096 elements)");
+  app->add_option("--bench-binary", args->request.bench_binary, "The rotorcert_bench executable (for --speed)")
+      ->default_str(spec::data_layout().bench_binary.string());
   add_third_party_options(*app, args->request);
   add_certify_options(*app, args->common);
   return {app, [args] { return run(*args); }};

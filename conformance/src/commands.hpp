@@ -74,6 +74,7 @@ struct BenchRequest {
   bool quick = false;  // rotorcert_bench --quick
   std::string filter;  // --benchmark_filter; empty: all
   std::string binary;  // empty: the rotorcert_bench of this build
+  std::vector<std::string> plugins;  // --plugin=PATH: third-party tables timed in the same run
 };
 /// Runs rotorcert_bench; on success `bench` holds its JSON, DIR/bench.json is written (renamed
 /// into place when whole). Exit code as `rotorcert bench`, messages prefixed with `who`.
@@ -95,9 +96,17 @@ struct ThirdPartyRequest {
   std::vector<std::string> names;       // empty: every adapter
   double adapter_timeout_s = 900;
   bool quiet = false;
+  bool speed = false;                   // time the native (C-ABI) libraries against glm_quat, same run
+  std::string bench_binary;             // empty: the rotorcert_bench of this build
 };
 /// --adapters, --adapters-env, --plugins, --adapter-timeout.
 void add_third_party_options(CLI::App& app, ThirdPartyRequest& request);
+/// Times the ops of every certified C-ABI library of `outcome` and glm_quat in one rotorcert_bench
+/// run (--plugin for the plugins, 4096 elements) and adds them to `section`: section.speed says
+/// how, each native library gets `speed`, per table the ns per element, the ratio to glm_quat's
+/// same op and their median. A failed run is a note, never an error.
+void add_third_party_speed(const ThirdPartyRequest& request, const thirdparty::Outcome& outcome, const char* who,
+                           nlohmann::json& section);
 /// Certifies the libraries; exit code as `rotorcert thirdparty` (0 every library that ran as
 /// expected, 1 not, 2 usage), messages prefixed with `who`. `section` is sections.third_party.
 int run_third_party(const ThirdPartyRequest& request, const spec::Spec& spec, const certify::CertifyOptions& options,

@@ -3,6 +3,7 @@
 #include "render_third_party.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,26 @@ std::string not_reproduced_text(const json& lib) {
   return items.empty() ? "" : "listed defects not reached with this run's cases: " + join(items, ", ");
 }
 
+/// "1.05" from a ratio (2 decimals below 10, 1 above).
+std::string ratio_text(const json& v) {
+  if (!v.is_number()) return "";
+  char b[32];
+  const double r = v.get<double>();
+  std::snprintf(b, sizeof b, r < 10 ? "%.2f" : "%.1f", r);
+  return b;
+}
+
+/// The speed column: per table the median ratio to the baseline's same ops (section.speed).
+std::string speed_text(const json& lib, const std::string& baseline) {
+  std::vector<std::string> parts;
+  for (const json& t : arr(lib, "speed"))
+    if (t.contains("median_ratio"))
+      parts.push_back(str(t, "scalar") + ": " + ratio_text(t["median_ratio"]) + "\u00d7 " + baseline + " (median of " +
+                      str(t, "ops_compared") + " ops)");
+  if (!parts.empty()) return join(parts, "; ");
+  return str(lib, "route") == "abi" ? "not timed" : "\u2014 (not native)";
+}
+
 }  // namespace
 
 void render_third_party_html(std::ostream& out, const json& section) {
@@ -108,7 +129,9 @@ void render_third_party_html(std::ostream& out, const json& section) {
       << esc(str(section, "errors")) << " failed to run.</p>\n";
 
   out << "<div class=\"scroll\">\n<table class=\"third-party\">\n<thead><tr><th>Library</th><th>Version</th><th>Package</th>"
-         "<th>Route</th><th>Status</th><th>Claim</th><th>Defects</th><th>As expected</th><th>Reproduce</th></tr></thead>\n<tbody>\n";
+         "<th>Route</th><th>Status</th><th>Claim</th><th>Defects</th><th>As expected</th><th>Speed</th><th>Reproduce</th></tr></thead>\n<tbody>\n";
+  const json& speed = obj_at(section, "speed");
+  const std::string baseline = str(speed, "baseline").empty() ? "GLM" : str(speed, "baseline");
   for (const json& lib : arr(section, "libraries")) {
     const std::string status = str(lib, "status");
     out << "<tr data-library=\"" << esc(str(lib, "name")) << "\" data-status=\"" << esc(status) << "\"><td>";
@@ -122,10 +145,30 @@ void render_third_party_html(std::ostream& out, const json& section) {
     if (!str(lib, "reason").empty()) out << "<div class=\"error\">" << esc(str(lib, "reason")) << "</div>";
     if (!not_reproduced_text(lib).empty()) out << "<div class=\"muted\">" << esc(not_reproduced_text(lib)) << "</div>";
     out << "</td><td>" << esc(claims_text(lib)) << "</td><td>" << esc(defects_count(lib)) << "</td><td class=\""
-        << (expected_text(lib) == "NO" ? "no" : "yes") << "\">" << expected_text(lib) << "</td><td><code>"
+        << (expected_text(lib) == "NO" ? "no" : "yes") << "\">" << expected_text(lib) << "</td><td>"
+        << esc(speed.contains("baseline") ? speed_text(lib, baseline) : "") << "</td><td><code>"
         << esc(str(lib, "reproduce")) << "</code></td></tr>\n";
   }
   out << "</tbody>\n</table>\n</div>\n";
+  if (!str(speed, "note").empty()) out << "<p class=\"muted\">Speed: " << esc(str(speed, "note"))
+                                      << (str(speed, "cpu").empty() ? "" : "; CPU " + esc(str(speed, "cpu"))) << ".</p>\n";
+  bool timed = false;
+  for (const json& lib : arr(section, "libraries")) timed = timed || !arr(lib, "speed").empty();
+  if (timed) {
+    out << "<details><summary>Speed per op of the native libraries (ns per element, ratio to " << esc(baseline)
+        << ")</summary>\n<div class=\"scroll\">\n<table class=\"third-party-speed\">\n<thead><tr><th>Library</th><th>Table</th>"
+           "<th>Op</th><th>ns / element</th><th>"
+        << esc(baseline) << " ns / element</th><th>Ratio</th></tr></thead>\n<tbody>\n";
+    for (const json& lib : arr(section, "libraries"))
+      for (const json& t : arr(lib, "speed"))
+        for (const json& o : arr(t, "ops"))
+          out << "<tr data-library=\"" << esc(str(lib, "name")) << "\"><td>" << esc(str(lib, "name")) << "</td><td>"
+              << esc(str(t, "table")) << " <span class=\"muted\">" << esc(str(t, "scalar")) << "</span></td><td><code>"
+              << esc(str(o, "op")) << "</code></td><td>" << esc(ratio_text(o.value("ns_per_element", json()))) << "</td><td>"
+              << esc(ratio_text(o.value("baseline_ns_per_element", json()))) << "</td><td>" << esc(ratio_text(o.value("ratio", json())))
+              << "</td></tr>\n";
+    out << "</tbody>\n</table>\n</div>\n</details>\n";
+  }
 
   const std::vector<Column> cols = columns(section);
   if (!cols.empty()) {
@@ -201,16 +244,20 @@ void render_third_party_markdown(std::ostream& out, const json& section) {
       << str(section, "cases_per_family") << " cases per family. " << str(section, "certified") << " certified, "
       << str(section, "not_run") << " not run, " << str(section, "errors")
       << " failed to run. Guide: `conformance/CERTIFY.md`.\n\n";
-  header(out, {"library", "version", "package", "route", "status", "claim", "defects", "as expected", "reproduce"});
+  const json& speed = obj_at(section, "speed");
+  const std::string baseline = str(speed, "baseline").empty() ? "GLM" : str(speed, "baseline");
+  header(out, {"library", "version", "package", "route", "status", "claim", "defects", "as expected", "speed", "reproduce"});
   for (const json& lib : arr(section, "libraries")) {
     std::string status = str(lib, "status") + (str(lib, "reason").empty() ? "" : ": " + str(lib, "reason"));
     if (!not_reproduced_text(lib).empty()) status += "; " + not_reproduced_text(lib);
     row(out, {cell(str(lib, "library")),
               cell(lib.contains("version") && lib["version"].is_array() ? join(lib["version"], ", ") : str(lib, "version")),
               cell(package_text(lib)), cell(str(lib, "route")), cell(status), cell(claims_text(lib)), cell(defects_count(lib)),
-              expected_text(lib), code(str(lib, "reproduce"))});
+              expected_text(lib), cell(speed.contains("baseline") ? speed_text(lib, baseline) : ""), code(str(lib, "reproduce"))});
   }
   out << '\n';
+  if (!str(speed, "note").empty())
+    out << "Speed: " << cell(str(speed, "note")) << (str(speed, "cpu").empty() ? "" : "; CPU " + cell(str(speed, "cpu"))) << ".\n\n";
   const std::vector<Column> cols = columns(section);
   if (!cols.empty()) {
     out << "### Per clause, per library\n\n";
