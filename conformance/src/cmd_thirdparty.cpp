@@ -51,6 +51,28 @@ int run_third_party(const ThirdPartyRequest& r, const spec::Spec& spec, const ce
   o.certify = options;
   o.adapter_timeout_s = r.adapter_timeout_s;
   o.quiet = r.quiet;
+  for (const std::string& v : r.versions) {
+    const std::size_t eq = v.find('=');
+    if (eq == 0 || eq == std::string::npos || eq + 1 == v.size()) {
+      std::cerr << who << ": --version " << v << ": expected NAME=VERSION (e.g. three=0.179.0)\n";
+      return kExitUsage;
+    }
+    o.versions.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+  }
+  // Another version is installed on first use, by the same installer and into the same place as
+  // the pins (scripts/setup-adapters --version NAME=VER: ENV/NAME@VER), from the package registry.
+  for (const auto& [name, version] : o.versions) {
+    if (std::filesystem::exists(o.env_dir / (name + "@" + version) / "status.json")) continue;
+    const std::filesystem::path log = std::filesystem::path(r.out) / ("setup-" + name + "@" + version + ".log");
+    std::filesystem::create_directories(log.parent_path());
+    if (!r.quiet) std::cout << who << ": installing " << name << " " << version << " (" << spec::data_layout().setup_adapters.string()
+                            << ") ...\n" << std::flush;
+    const thirdparty::ProgramRun setup = thirdparty::run_program(
+        {"python3", spec::data_layout().setup_adapters.string(), "--env", o.env_dir.string(), "--version", name + "=" + version},
+        {}, log, 1800);
+    if (!setup.started || setup.exit_code != 0)
+      std::cerr << who << ": setup-adapters --version " << name << "=" << version << " failed; see " << log << '\n';
+  }
   try {
     outcome = thirdparty::certify_third_party(spec, o, known);
   } catch (const std::exception& e) {
@@ -127,7 +149,7 @@ void add_third_party_speed(const ThirdPartyRequest& r, const thirdparty::Outcome
                                    "'s same op and scalar; ratio = library / " + kBaseline + " (below 1: faster)"}};
   for (nlohmann::json& lib : section["libraries"]) {
     const auto it = std::find_if(outcome.libraries.begin(), outcome.libraries.end(),
-                                 [&](const thirdparty::Library& l) { return l.manifest.name == lib.value("name", ""); });
+                                 [&](const thirdparty::Library& l) { return l.manifest.run_name() == lib.value("name", ""); });
     if (it == outcome.libraries.end() || it->manifest.route != "abi") continue;
     nlohmann::json per_table = nlohmann::json::array();
     for (const certify::Certificate& c : it->certificates) {
@@ -222,6 +244,10 @@ void add_third_party_options(CLI::App& app, ThirdPartyRequest& r) {
   app.add_option("--adapter-timeout", r.adapter_timeout_s, "Wall-clock limit of one run of a vectors adapter, seconds")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--version", r.versions,
+                 "NAME=VER: also certify version VER of adapter NAME's library (installed on first use into "
+                 "ENV/NAME@VER), compared with the pin's known defects; repeatable")
+      ->option_text("NAME=VER");
 }
 
 Command add_thirdparty(CLI::App& parent) {

@@ -96,10 +96,11 @@ struct ThirdPartyRequest {
   std::vector<std::string> names;       // empty: every adapter
   double adapter_timeout_s = 900;
   bool quiet = false;
+  std::vector<std::string> versions;    // --version NAME=VER: another version of NAME, certified as well
   bool speed = false;                   // time the native (C-ABI) libraries against glm_quat, same run
   std::string bench_binary;             // empty: the rotorcert_bench of this build
 };
-/// --adapters, --adapters-env, --plugins, --adapter-timeout.
+/// --adapters, --adapters-env, --plugins, --adapter-timeout, --version.
 void add_third_party_options(CLI::App& app, ThirdPartyRequest& request);
 /// Times the ops of every certified C-ABI library of `outcome` and glm_quat in one rotorcert_bench
 /// run (--plugin for the plugins, 4096 elements) and adds them to `section`: section.speed says

@@ -133,6 +133,38 @@ TEST(ThirdParty, ListedDefectThatPassesIsNews) {
   EXPECT_FALSE(lib.at("as_expected").get<bool>());
 }
 
+TEST(ThirdParty, AnotherVersionIsComparedWithThePin) {
+  RC_CLAUSE("REPORT-3");
+  // The pin composes b a (a listed defect); "version 2" fixed it. Both run, as two libraries.
+  Fixture f("version", {"python3", kExample, "--bug"},
+            json::array({{{"table", "python_example_bug"}, {"scalar", "double"}, {"clause", "COMPOSE-1"}, {"why", "b a"}}}));
+  f.o.certify.cases.cases_per_family = thirdparty::kListedAtCases;
+  write(f.root / "env" / "python_example_bug@2" / "status.json",
+        {{"installed", true}, {"reason", nullptr}, {"env", json::object()},
+         {"command", {"python3", kExample, "--name", "python_example_bug", "--version", "2"}}});
+  f.o.versions = {{"python_example_bug", "2"}};
+  const thirdparty::Outcome outcome = thirdparty::certify_third_party(the_spec(), f.o);
+  const json section = thirdparty::section_json(outcome, f.o);
+  ASSERT_EQ(section.at("libraries").size(), 2u);
+  const json& pin = section.at("libraries").at(0);
+  const json& v2 = section.at("libraries").at(1);
+  EXPECT_EQ(pin.at("name"), "python_example_bug");
+  EXPECT_TRUE(pin.at("as_expected").get<bool>());
+  ASSERT_EQ(v2.at("name"), "python_example_bug@2") << v2.at("reason");
+  EXPECT_EQ(v2.at("status"), "certified") << v2.at("reason");
+  EXPECT_EQ(v2.at("requested_version"), "2");
+  EXPECT_EQ(v2.at("version"), "2");  // what the library reported, not the pin
+  ASSERT_EQ(v2.at("against_pin").at("fixed").size(), 1u) << v2.dump();
+  EXPECT_EQ(v2.at("against_pin").at("fixed").at(0).at("clause"), "COMPOSE-1");
+  EXPECT_TRUE(v2.at("against_pin").at("appeared").empty());
+  EXPECT_NE(v2.at("reproduce").get<std::string>().find("--version python_example_bug=2"), std::string::npos);
+  // Differing from the pin is the finding, not a failure of the run.
+  EXPECT_TRUE(section.at("as_expected").get<bool>());
+  // A version of a library that has no environment of its own (a build's plugin) is refused.
+  f.o.versions = {{"no_such_adapter", "2"}};
+  EXPECT_THROW(thirdparty::certify_third_party(the_spec(), f.o), std::runtime_error);
+}
+
 TEST(ThirdParty, ListedDefectNotReachedWithFewerCasesIsNoSurprise) {
   RC_CLAUSE("REPORT-3");
   Fixture f("fewer_cases", {"python3", kExample},

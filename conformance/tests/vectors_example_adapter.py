@@ -119,6 +119,8 @@ def main(argv):
     p.add_argument("--vectors", required=True, help="directory written by `rotorcert vectors export`")
     p.add_argument("--out", required=True, help="results file to write")
     p.add_argument("--bug", action="store_true", help="compose in the wrong order (b a)")
+    p.add_argument("--name", help="the implementation's name in the results (default python_example[_bug])")
+    p.add_argument("--version", default="1", help="the implementation's version in the results")
     args = p.parse_args(argv)
 
     with open(os.path.join(args.vectors, "index.json")) as f:
@@ -140,8 +142,8 @@ def main(argv):
         "format": "rotorcert-results",
         "format_version": 1,
         "implementation": {
-            "name": "python_example" + ("_bug" if args.bug else ""),
-            "version": "1",
+            "name": args.name or "python_example" + ("_bug" if args.bug else ""),
+            "version": args.version,
             "scalar": "double",
             "description": "vectors_example_adapter.py: normalize, compose, inverse, apply_vector in pure Python",
         },

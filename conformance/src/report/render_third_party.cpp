@@ -74,6 +74,7 @@ std::string claims_text(const json& lib) {
 
 std::string expected_text(const json& lib) {
   if (str(lib, "status") != "certified") return "\u2014";
+  if (lib.contains("against_pin")) return "\u2014 (another version)";
   return str(lib, "as_expected") == "true" ? "yes" : "NO";
 }
 
@@ -82,6 +83,20 @@ std::string defects_count(const json& lib) {
   for (const json& d : arr(lib, "defects")) (str(d, "known") == "true" ? known : fresh) += 1;
   if (str(lib, "status") != "certified") return "\u2014";
   return std::to_string(known + fresh) + (fresh ? " (" + std::to_string(fresh) + " not listed)" : "");
+}
+
+/// Another version than the pin: what changed against the pin's known defects and errors.
+std::string against_pin_text(const json& lib) {
+  if (!lib.contains("against_pin")) return "";
+  const json& a = lib["against_pin"];
+  std::vector<std::string> items;
+  for (const json& f : arr(a, "fixed")) items.push_back("fixed here: " + str(f, "clause") + " " + str(f, "scalar") + " " + str(f, "outcome"));
+  for (const json& f : arr(a, "appeared")) items.push_back("not in the pin: " + str(f, "clause") + " " + str(f, "scalar"));
+  for (const json& m : arr(a, "worst_error_moved"))
+    items.push_back(str(m, "clause") + " " + str(m, "scalar") + " worst error " + error_eps_text(m.value("error_eps", json())) +
+                    " eps here, " + error_eps_text(m.value("pin_error_eps", json())) + " eps at the pin");
+  return "version " + str(lib, "requested_version") + " against the pin " + str(lib, "pinned_version") + ": " +
+         (items.empty() ? "the same defects" : join(items, "; "));
 }
 
 /// Listed defects a run with fewer cases than they were found with did not reach.
@@ -143,7 +158,8 @@ void render_third_party_html(std::ostream& out, const json& section) {
         << "</td><td>" << esc(package_text(lib)) << "</td><td>" << esc(str(lib, "route")) << " (" << esc(str(lib, "language"))
         << ")</td><td>" << esc(status);
     if (!str(lib, "reason").empty()) out << "<div class=\"error\">" << esc(str(lib, "reason")) << "</div>";
-    if (!not_reproduced_text(lib).empty()) out << "<div class=\"muted\">" << esc(not_reproduced_text(lib)) << "</div>";
+    if (!against_pin_text(lib).empty()) out << "<div class=\"against-pin\">" << esc(against_pin_text(lib)) << "</div>";
+    else if (!not_reproduced_text(lib).empty()) out << "<div class=\"muted\">" << esc(not_reproduced_text(lib)) << "</div>";
     out << "</td><td>" << esc(claims_text(lib)) << "</td><td>" << esc(defects_count(lib)) << "</td><td class=\""
         << (expected_text(lib) == "NO" ? "no" : "yes") << "\">" << expected_text(lib) << "</td><td>"
         << esc(speed.contains("baseline") ? speed_text(lib, baseline) : "") << "</td><td><code>"
@@ -249,7 +265,8 @@ void render_third_party_markdown(std::ostream& out, const json& section) {
   header(out, {"library", "version", "package", "route", "status", "claim", "defects", "as expected", "speed", "reproduce"});
   for (const json& lib : arr(section, "libraries")) {
     std::string status = str(lib, "status") + (str(lib, "reason").empty() ? "" : ": " + str(lib, "reason"));
-    if (!not_reproduced_text(lib).empty()) status += "; " + not_reproduced_text(lib);
+    if (!against_pin_text(lib).empty()) status += "; " + against_pin_text(lib);
+    else if (!not_reproduced_text(lib).empty()) status += "; " + not_reproduced_text(lib);
     row(out, {cell(str(lib, "library")),
               cell(lib.contains("version") && lib["version"].is_array() ? join(lib["version"], ", ") : str(lib, "version")),
               cell(package_text(lib)), cell(str(lib, "route")), cell(status), cell(claims_text(lib)), cell(defects_count(lib)),

@@ -31,6 +31,7 @@ DataLayout layout_for_executable(const fs::path& exe) {
     l.mutant_plugin_dir = lib / "mutants";
     l.adapter_plugin_dir = lib / "adapter_plugins";
     l.bench_binary = prefix / "libexec/rotorcert/rotorcert_bench";
+    l.setup_adapters = share / "setup-adapters";
     const char* cache = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
     l.adapters_env = cache && *cache ? fs::path(cache) / "rotorcert/adapters"
@@ -48,6 +49,7 @@ DataLayout layout_for_executable(const fs::path& exe) {
   l.adapter_plugin_dir = build / "adapter_plugins";
   l.bench_binary = ROTORCERT_BENCH_BINARY;
   l.adapters_env = source / "build/adapters";
+  l.setup_adapters = source / "scripts/setup-adapters";
   return l;
 }
 

@@ -126,8 +126,9 @@ void attach_reproducers(Library& lib, const std::vector<json>& listed) {
     // Rust: an example target of the adapter's crate (its Cargo.toml lists reproducers/*.rs), built
     // against the pinned crate in the target directory scripts/setup-adapters made.
     const std::string crate = (m.dir / "Cargo.toml").lexically_relative(root).string();
-    std::string run = ext == ".py" ? "build/adapters/" + m.name + "/venv/bin/python " + path.string()
-                      : ext == ".js" ? "NODE_PATH=build/adapters/" + m.name + "/node_modules node " + path.string()
+    // Python and JavaScript run in the environment of the certified version (NAME@VER for another).
+    std::string run = ext == ".py" ? "build/adapters/" + m.run_name() + "/venv/bin/python " + path.string()
+                      : ext == ".js" ? "NODE_PATH=build/adapters/" + m.run_name() + "/node_modules node " + path.string()
                       : ext == ".rs" ? "cargo run --quiet --release --locked --manifest-path " + crate + " --target-dir build/adapters/" +
                                            m.name + "/target --example " + stem
                                      : "ctest --preset default -R '^reproducer_" + m.name + "_" + stem + "$' -V";
@@ -167,7 +168,7 @@ json defect_json(const Defect& d) {
 json library_json(const Library& lib) {
   const Manifest& m = lib.manifest;
   const json& r = m.raw;
-  json j = {{"name", m.name},
+  json j = {{"name", m.run_name()},
             {"library", m.library},
             {"homepage", r.value("homepage", "")},
             {"license", r.value("license", "")},
@@ -197,6 +198,21 @@ json library_json(const Library& lib) {
     const std::vector<json> versions = version_list(lib);
     j["version"] = versions.size() == 1 ? versions.front() : json(versions);
   }
+  if (!m.version.empty()) {
+    // Another version than the pin: what changed against the pin's known defects, not a verdict.
+    j["package"]["version"] = m.version;
+    j["requested_version"] = m.version;
+    j["pinned_version"] = r.value("package", json::object()).value("version", "");
+    if (lib.status == LibraryStatus::certified) {
+      json fixed = json::array(), appeared = json::array();
+      for (const NotReproduced& n : lib.not_reproduced)
+        if (n.outcome == engine::Outcome::pass || n.outcome == engine::Outcome::quality_warning)
+          fixed.push_back({{"scalar", n.scalar}, {"clause", n.clause}, {"outcome", engine::to_string(n.outcome)}});
+      for (const Defect& d : lib.defects)
+        if (!d.why) appeared.push_back({{"scalar", d.scalar}, {"clause", d.result.clause}});
+      j["against_pin"] = {{"fixed", fixed}, {"appeared", appeared}};
+    }
+  }
   if (lib.adapter_seconds) {
     j["adapter_seconds"] = *lib.adapter_seconds;
     j["adapter_log"] = lib.adapter_log;
@@ -220,9 +236,22 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       for (const Manifest& m : manifests) have += (have.empty() ? "" : ", ") + m.name;
       throw std::runtime_error("no adapter named '" + n + "' in " + o.adapters_dir.string() + " (have: " + have + ")");
     }
+  const std::vector<Manifest> all = manifests;
   std::erase_if(manifests, [&](const Manifest& m) {
     return !o.names.empty() && std::find(o.names.begin(), o.names.end(), m.name) == o.names.end();
   });
+  // Other versions: the same adapter on another release of its library, a library of its own.
+  for (const auto& [name, version] : o.versions) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const Manifest& m) { return m.name == name; });
+    if (it == all.end()) throw std::runtime_error("--version " + name + "=" + version + ": no adapter named '" + name + "'");
+    if (!it->uses_environment())
+      throw std::runtime_error("--version " + name + "=" + version + ": " + it->library + " comes from " +
+                               it->raw.value("package", json::object()).value("registry", "the build") +
+                               ", one version per installation; certify another by building the plugin against it");
+    Manifest v = *it;
+    v.version = version;
+    manifests.push_back(std::move(v));
+  }
   // Seed and cases other than the defaults travel with the reproduce commands.
   std::string run_options;
   if (o.certify.cases.seed != 1) run_options += " --seed " + std::to_string(o.certify.cases.seed);
@@ -230,16 +259,19 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
     run_options += " --cases " + std::to_string(o.certify.cases.cases_per_family);
   if (o.certify.cases.search_budget != certify::kDefaultSearchBudget)
     run_options += " --search " + std::to_string(o.certify.cases.search_budget);
-  auto reproduce = [&](const std::string& name, const std::vector<std::string>& clauses) {
-    std::string s = reproduce_command(name, clauses);
-    return s.insert(s.find(" --out"), run_options);
+  auto reproduce = [&](const Manifest& m, const std::vector<std::string>& clauses) {
+    std::string s = reproduce_command(m.name, clauses);
+    const std::string version = m.version.empty() ? "" : " --version " + m.name + "=" + m.version;
+    s.insert(s.find(" --out"), run_options + version);
+    if (!m.version.empty()) s += "@" + m.version;
+    return s;
   };
 
   std::vector<Library> libs;
   for (const Manifest& m : manifests) {
     Library lib;
     lib.manifest = m;
-    lib.reproduce = reproduce(m.name, o.certify.clauses);
+    lib.reproduce = reproduce(m, o.certify.clauses);
     libs.push_back(std::move(lib));
   }
 
@@ -277,7 +309,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       // scripts/setup-adapters built it in (cargo), named by its status.json.
       fs::path path;
       if (m.uses_environment()) {
-        const Environment env = read_environment(o.env_dir, m.name);
+        const Environment env = read_environment(o.env_dir, m.run_name());
         if (!env.installed) {
           libs[i].reason = env.reason;
           break;
@@ -285,7 +317,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
         path = env.plugin;
         if (path.empty()) {
           libs[i].status = LibraryStatus::error;
-          libs[i].reason = "the environment of " + m.name + " (" + (o.env_dir / m.name / "status.json").string() +
+          libs[i].reason = "the environment of " + m.run_name() + " (" + (o.env_dir / m.run_name() / "status.json").string() +
                            ") names no plugin (run scripts/setup-adapters " + m.name + ")";
           break;
         }
@@ -330,7 +362,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       for (certify::Certificate& cert : made[i]) {
         if (cert.table.scalar != scalar) continue;
         for (auto& [clause, command] : cert.reproduce)
-          if (!command.empty()) command = reproduce(manifests[i].name, {clause});
+          if (!command.empty()) command = reproduce(manifests[i], {clause});
         libs[i].certificates.push_back(cert);
       }
     conclude(libs[i], o.certify.cases.cases_per_family);
@@ -343,7 +375,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
     const Manifest& m = manifests[i];
     Library& lib = libs[i];
     if (m.route != "vectors") continue;
-    const Environment env = read_environment(o.env_dir, m.name);
+    const Environment env = read_environment(o.env_dir, m.run_name());
     if (!env.installed) {
       lib.reason = env.reason;
       continue;
@@ -356,13 +388,13 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       vectors::write_export(vectors_dir, vectors::render_export(spec, b));
       exported = true;
     }
-    const fs::path dir = o.out / m.name;
+    const fs::path dir = o.out / m.run_name();
     fs::create_directories(dir);
     const fs::path results_file = dir / "results.json", log = dir / "adapter.log";
     fs::remove(results_file);  // a stale file must not stand in for this run's
     std::vector<std::string> argv = env.command;
     argv.insert(argv.end(), {"--vectors", fs::absolute(vectors_dir).string(), "--out", fs::absolute(results_file).string()});
-    if (!o.quiet) std::cout << "third-party: running the " << m.name << " adapter ...\n" << std::flush;
+    if (!o.quiet) std::cout << "third-party: running the " << m.run_name() << " adapter ...\n" << std::flush;
     const ProgramRun run = run_program(argv, env.env, log, o.adapter_timeout_s);
     lib.adapter_seconds = run.seconds;
     lib.adapter_log = log.string();
@@ -391,7 +423,7 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
       const vectors::VectorSet set = vectors::load_vectors(spec, vectors_dir, &format);
       vectors::Grading g = vectors::grade(spec, set, results);
       g.certificate.expected_failures = adapter_expected_failures(m, results.scalar);
-      for (auto& [clause, command] : g.certificate.reproduce) command = reproduce(m.name, {clause});
+      for (auto& [clause, command] : g.certificate.reproduce) command = reproduce(m, {clause});
       lib.certificates.push_back(std::move(g.certificate));
       conclude(lib, o.certify.cases.cases_per_family);
     } catch (const std::exception& e) {
@@ -412,8 +444,11 @@ const char* to_string(LibraryStatus s) {
 }
 
 bool Outcome::as_expected() const {
+  // A library at another version than its pin is compared with the pin's known defects, to show
+  // what changed; that it differs is the finding, not a failure of the run.
   return std::all_of(libraries.begin(), libraries.end(), [](const Library& lib) {
-    return lib.status != LibraryStatus::error && (lib.status != LibraryStatus::certified || lib.as_expected);
+    return lib.status != LibraryStatus::error &&
+           (lib.status != LibraryStatus::certified || lib.as_expected || !lib.manifest.version.empty());
   });
 }
 
@@ -431,6 +466,28 @@ json section_json(const Outcome& outcome, const Options& o) {
     not_run += lib.status == LibraryStatus::not_run;
     errors += lib.status == LibraryStatus::error;
     list.push_back(library_json(lib));
+  }
+  // Another version beside its pin in the same run: per clause that FAILs in both, how the worst
+  // error moved (more than 2x either way, the threshold of rotorcert diff).
+  for (json& v : list) {
+    if (!v.contains("against_pin")) continue;
+    const std::string pin_name = v.value("name", "").substr(0, v.value("name", "").find('@'));
+    const auto pin = std::find_if(list.begin(), list.end(), [&](const json& l) { return l.value("name", "") == pin_name; });
+    if (pin == list.end()) continue;
+    json moved = json::array();
+    for (const json& d : v.value("defects", json::array()))
+      for (const json& p : pin->value("defects", json::array())) {
+        if (p.value("clause", "") != d.value("clause", "") || p.value("scalar", "") != d.value("scalar", "")) continue;
+        const json& a = p.value("worst", json::object());
+        const json& b = d.value("worst", json::object());
+        if (!a.contains("error_eps") || !b.contains("error_eps") || !a["error_eps"].is_number() || !b["error_eps"].is_number())
+          continue;
+        const double pinned = a["error_eps"].get<double>(), here = b["error_eps"].get<double>();
+        if (pinned > 2 * here || here > 2 * pinned)
+          moved.push_back({{"scalar", d.value("scalar", "")}, {"clause", d.value("clause", "")},
+                           {"pin_error_eps", pinned}, {"error_eps", here}});
+      }
+    v["against_pin"]["worst_error_moved"] = moved;
   }
   return {{"adapters_dir", o.adapters_dir.string()},
           {"environments", o.env_dir.string()},

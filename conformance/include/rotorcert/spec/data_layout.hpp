@@ -7,6 +7,7 @@
 //     PREFIX/share/rotorcert/impls/NAME/expected_failures.json
 //     PREFIX/share/rotorcert/mutants/mutants.json
 //     PREFIX/share/rotorcert/adapters/NAME/          adapter manifests, scripts, known defects
+//     PREFIX/share/rotorcert/setup-adapters          installs the adapters' environments
 //     PREFIX/lib/rotorcert/mutants/                  rotorcert_mutant_*.so
 //     PREFIX/lib/rotorcert/adapter_plugins/          the adapters' C-ABI plugins
 //     PREFIX/libexec/rotorcert/rotorcert_bench
@@ -28,6 +29,8 @@ struct DataLayout {
   /// Where scripts/setup-adapters installs the adapters' environments by default: build/adapters
   /// of the source tree, or $XDG_CACHE_HOME/rotorcert/adapters (~/.cache/...) when installed.
   std::filesystem::path adapters_env;
+  /// scripts/setup-adapters of the source tree, or PREFIX/share/rotorcert/setup-adapters.
+  std::filesystem::path setup_adapters;
 };
 
 /// The layout of this process's tool, decided once from the location of /proc/self/exe.

@@ -26,6 +26,12 @@ struct Manifest {
   std::string builtin, plugin;       // route abi: exactly one set
   std::vector<std::string> scalars;  // "float", "double"
   nlohmann::json raw;                // the whole manifest, shown in the report
+  /// Another version of the library than the manifest's pin (`rotorcert thirdparty --version
+  /// NAME=VER`), empty for the pin. Its environment is ENV/NAME@VER, its known defects are still
+  /// the pin's (what changed is the point).
+  std::string version;
+  /// NAME, or NAME@VER for another version: the environment's and the output's directory name.
+  std::string run_name() const { return version.empty() ? name : name + "@" + version; }
   /// Whether scripts/setup-adapters makes what runs it (ENV/NAME/status.json): a vectors adapter's
   /// interpreter and packages, a Rust plugin's build.
   bool uses_environment() const { return route == "vectors" || language == "rust"; }

@@ -35,6 +35,9 @@ struct Options {
   std::filesystem::path plugin_dir;    // the build's adapter_plugins/ (C and C++ plugins; Rust ones are in env_dir)
   std::filesystem::path out;           // vectors/, NAME/results.json, NAME/adapter.log go here
   std::vector<std::string> names;      // only these adapters (empty: all)
+  /// Other versions to certify as well, (adapter, version): each a library of its own, NAME@VER,
+  /// in the environment scripts/setup-adapters --version NAME=VER installed.
+  std::vector<std::pair<std::string, std::string>> versions;
   certify::CertifyOptions certify;     // seed, cases, clauses, limits, jobs (both routes)
   double adapter_timeout_s = 900;      // one run of a vectors adapter
   bool quiet = false;
