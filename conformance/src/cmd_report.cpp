@@ -201,6 +201,17 @@ int run(const Args& a) {
     request.out = (std::filesystem::path(a.common.out) / "third_party").string();
     request.quiet = a.common.quiet;
     request.speed = !a.no_bench;  // the native libraries timed beside GLM, as the speed section is
+    // The before/after pairs the adapters name (adapter.json "compare_versions": a release on the
+    // other side of a fix), unless the command line chose versions itself.
+    if (request.versions.empty()) {
+      try {
+        for (const thirdparty::Manifest& m : thirdparty::load_manifests(request.adapters_dir))
+          for (const nlohmann::json& v : m.raw.value("compare_versions", nlohmann::json::array()))
+            if (v.is_object() && v.contains("version")) request.versions.push_back(m.name + "=" + v["version"].get<std::string>());
+      } catch (const std::exception&) {
+        // A malformed manifest is reported by run_third_party itself.
+      }
+    }
     certify::json section;
     const int rc = run_third_party(request, spec, options, known, "rotorcert report: third-party", third_party, section);
     if (rc == kExitUsage) return kExitUsage;

@@ -8,6 +8,7 @@
 // environment; `rotorcert thirdparty` loads it from there. The ops are in ops.rs, the ABI and the
 // panic boundary in abi.rs; every convention mapping and declaration is stated in adapter.json.
 
+#[path = "../../rust_abi/abi.rs"]
 mod abi;
 
 use abi::*;

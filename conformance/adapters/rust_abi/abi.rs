@@ -1,8 +1,8 @@
 // The rotorcert C ABI, version 2 (impls/include/rotorcert/impl_abi.h), written out in Rust for a
 // Rust adapter: the table structs with the header's field order, the batch loop with the status
-// rule of RESULT-2, and the panic boundary. Each Rust adapter carries its own copy of this file
-// (conformance/adapters/{glam,nalgebra}/src/abi.rs, identical), so that an adapter directory is a
-// self-contained crate; keep the copies equal.
+// rule of RESULT-2, and the panic boundary. One file for every Rust adapter: each crate includes it
+// with `#[path = "../../rust_abi/abi.rs"] mod abi;` (conformance/adapters/rust_abi/, installed and
+// fingerprinted with the crates by scripts/setup-adapters).
 //
 // Layouts (LAYOUT-1): quaternion [x, y, z, w], vector [x, y, z], dual quaternion [real xyzw, dual
 // xyzw], 3x3 matrix column-major m[c*3 + r], scalars one value. Element i of an input or output of
