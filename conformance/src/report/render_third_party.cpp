@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -85,13 +86,34 @@ std::string defects_count(const json& lib) {
   return std::to_string(known + fresh) + (fresh ? " (" + std::to_string(fresh) + " not listed)" : "");
 }
 
-/// Another version than the pin: what changed against the pin's known defects and errors.
+/// Whether dotted version a is older than b (numeric fields compared in order; "3.16.0" < "3.17.0").
+bool older(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    std::size_t ni = a.find('.', i), nj = b.find('.', j);
+    const std::string fa = a.substr(i, ni == std::string::npos ? std::string::npos : ni - i);
+    const std::string fb = b.substr(j, nj == std::string::npos ? std::string::npos : nj - j);
+    const long va = std::strtol(fa.c_str(), nullptr, 10), vb = std::strtol(fb.c_str(), nullptr, 10);
+    if (va != vb) return va < vb;
+    i = ni == std::string::npos ? a.size() : ni + 1;
+    j = nj == std::string::npos ? b.size() : nj + 1;
+  }
+  return false;
+}
+
+/// Another version than the pin: what changed against the pin's known defects and errors, said
+/// in the direction of time (an older release's extra FAIL is a defect the pin fixed).
 std::string against_pin_text(const json& lib) {
   if (!lib.contains("against_pin")) return "";
   const json& a = lib["against_pin"];
+  const bool before = older(str(lib, "requested_version"), str(lib, "pinned_version"));
   std::vector<std::string> items;
-  for (const json& f : arr(a, "fixed")) items.push_back("fixed here: " + str(f, "clause") + " " + str(f, "scalar") + " " + str(f, "outcome"));
-  for (const json& f : arr(a, "appeared")) items.push_back("not in the pin: " + str(f, "clause") + " " + str(f, "scalar"));
+  for (const json& f : arr(a, "fixed"))
+    items.push_back((before ? "passes here, FAILs at the pin: " : "fixed since the pin: ") + str(f, "clause") + " " +
+                    str(f, "scalar"));
+  for (const json& f : arr(a, "appeared"))
+    items.push_back((before ? "FAILs here, fixed by the pin: " : "new since the pin: ") + str(f, "clause") + " " +
+                    str(f, "scalar"));
   for (const json& m : arr(a, "worst_error_moved"))
     items.push_back(str(m, "clause") + " " + str(m, "scalar") + " worst error " + error_eps_text(m.value("error_eps", json())) +
                     " eps here, " + error_eps_text(m.value("pin_error_eps", json())) + " eps at the pin");

@@ -2,9 +2,11 @@
 """rotorcert reproducer: clifford (pygae) clifford.tools.g3c.rotor_parameterisation.interpolate_rotors, clause SLERP-3.
 
 SLERP-3 (spec/SPEC.md 8.2): slerp(a, b, 0) = a and slerp(a, b, 1) = b' (the hemisphere-aligned b),
-tolerance eps16 (loose bar 256 eps), METRIC-1 and componentwise sign. interpolate_rotors at t = 1 is
-exp(general_logarithm(R_b ~R_a)) R_a through the Taylor-series exp (EXP-1): it does not return b'
-but a rotor ~2.4e6 eps away from it.
+tolerance eps16 (loose bar 256 eps), METRIC-1 and componentwise sign (since spec 2.2.0 a -b' at t = 1 is
+ACCEPTABLE, ACC-1 endpoint_sign). interpolate_rotors at t = 1 is exp(general_logarithm(R_b ~R_a)) R_a:
+near a half turn apart general_logarithm's log comes out near 0 (dorst_atanh2 returns its argument once
+|F^2| < 1e-6, tools/g3c/rotor_parameterisation.py:45-46), so the result stays near a (the suite's worst
+input, 1.4e16 eps); elsewhere the Taylor-series exp (EXP-1) gives a rotor ~2.4e6 eps away from b'.
 interpolate_rotors(R_next, R_n, t) ("Interpolates all conformal type rotors") is clifford's only rotor
 interpolation: exp(t general_logarithm(R_next ~R_n)) R_n, with the Taylor-series exp of EXP-1.
 Upstream: no matching issue found in pygae/clifford.
@@ -79,26 +81,38 @@ def clifford_slerp(a, b, t):  # a, b as (x, y, z, w)
 EPS = 2.0 ** -52
 h = float.fromhex
 LOOSE = 256  # eps16 loose bar (spec/clauses.json)
-a = [h("-0x1.d90ca2f56e7ddp-1"), h("0x1.13fb16523979dp-2"), h("-0x1.6ebb689eef96fp-7"), h("-0x1.15ce77a5fa751p-2")]  # (x, y, z, w)
-b = [h("-0x1.7b9c2bb911b64p-7"), h("-0x1.746a7c33a4309p-2"), h("-0x1.b5020beada27p-1"), h("-0x1.7de31255b9fbep-2")]
 t = h("0x1p+0")
+cases = [  # (what, a, b), (x, y, z, w)
+    ("the suite's worst input, a.b = 3.9e-4: near a half turn general_logarithm's log is near 0, the result near a",
+     [h("-0x1.41c3074b3be4p-2"), h("0x1.85a184ece5a55p-3"), h("-0x1.dc349977c51cp-1"), h("0x1.30d9e00b13232p-9")],
+     [h("-0x1.cece1248136b1p-4"), h("0x1.e120d2d4c8851p-1"), h("0x1.d8201dff2a874p-3"), h("0x1.ceb6e646f8a66p-3")]),
+    ("an ordinary pair: the Taylor-series exp misses b'",
+     [h("-0x1.d90ca2f56e7ddp-1"), h("0x1.13fb16523979dp-2"), h("-0x1.6ebb689eef96fp-7"), h("-0x1.15ce77a5fa751p-2")],
+     [h("-0x1.7b9c2bb911b64p-7"), h("-0x1.746a7c33a4309p-2"), h("-0x1.b5020beada27p-1"), h("-0x1.7de31255b9fbep-2")]),
+]
 
-print("rotorcert reproducer: clifford %s %s: interpolate_rotors at t = 1 does not return b' (~2.4e6 eps away; Taylor-series exp)" % (clifford.__version__, CLAUSE))
-got = clifford_slerp(a, b, t)
-ref = slerp_ref(a, b, t)
-e1_, e6_ = dist(got, ref), abs(norm(got) - 1)  # METRIC-1 (radians) and METRIC-6 (norm defect)
-err = max(e1_, e6_)
-bad = not (err <= LOOSE * D(EPS))
-print("  call:    interpolate_rotors(Rb, Ra, t), Ra/Rb = clifford.tools.g3.quaternion_to_rotor([w, x, y, z])")
-print("  input:   a = [%s]" % ", ".join(c.hex() for c in a))
-print("           b = [%s]  (x, y, z, w), a.b = %s, t = %s" % (", ".join(c.hex() for c in b), float(sum(D(x) * D(y) for x, y in zip(a, b))), t.hex()))
-print("  library: [%s]" % ", ".join(c.hex() for c in got))
-print("  correct: [%s]  slerp at 60 digits (SLERP-1: hemisphere rule, sine formula)" % ", ".join(float(c).hex() for c in ref))
-print("  error:   METRIC-1 %.3e rad = %.4g eps, METRIC-6 %.3e = %.4g eps (bar %d eps)%s"
-      % (e1_, e1_ / D(EPS), e6_, e6_ / D(EPS), LOOSE, "  <-- DEFECT" if bad else ""))
-sign = sum(D(g) * r for g, r in zip(got, ref))  # SLERP-3 also checks the sign: -b' is a FAIL
-print("  sign:    got . b' = %.6f (%s)" % (sign, "same sign as b'" if sign > 0 else "-b'  <-- DEFECT"))
-bad = bad or not sign > 0
-print("DEFECT SHOWN" if bad else "DEFECT NOT SHOWN")
-sys.exit(0 if bad else 1)
-
+print("rotorcert reproducer: clifford %s %s: interpolate_rotors at t = 1 does not return b' (a rotation away near a "
+      "half turn apart, ~2.4e6 eps elsewhere; Taylor-series exp)" % (clifford.__version__, CLAUSE))
+shown = False
+for what, a, b in cases:
+    got = clifford_slerp(a, b, t)
+    ref = slerp_ref(a, b, t)
+    e1_, e6_ = dist(got, ref), abs(norm(got) - 1)  # METRIC-1 (radians) and METRIC-6 (norm defect)
+    err = max(e1_, e6_)
+    bad = not (err <= LOOSE * D(EPS))
+    shown = shown or bad
+    print("  case:    %s" % what)
+    print("  call:    interpolate_rotors(Rb, Ra, t), Ra/Rb = clifford.tools.g3.quaternion_to_rotor([w, x, y, z])")
+    print("  input:   a = [%s]" % ", ".join(c.hex() for c in a))
+    print("           b = [%s]  (x, y, z, w), a.b = %s, t = %s" % (", ".join(c.hex() for c in b), float(sum(D(x) * D(y) for x, y in zip(a, b))), t.hex()))
+    print("  library: [%s]" % ", ".join(c.hex() for c in got))
+    print("  correct: [%s]  slerp at 60 digits (SLERP-1: hemisphere rule, sine formula)" % ", ".join(float(c).hex() for c in ref))
+    print("  error:   METRIC-1 %.3e rad = %.4g eps, METRIC-6 %.3e = %.4g eps (bar %d eps)%s"
+          % (e1_, e1_ / D(EPS), e6_, e6_ / D(EPS), LOOSE, "  <-- DEFECT" if bad else ""))
+    # SLERP-3 measures the sign too, but since spec 2.2.0 -b' at t = 1 is the same rotation, ACCEPTABLE (ACC-1
+    # endpoint_sign): the sign is reported, not a defect; METRIC-1 above is sign-free.
+    sign = sum(D(g) * r for g, r in zip(got, ref))
+    print("  sign:    got . b' = %.6f (%s)" % (sign, "rotation off by more than the bar, sign not judged" if e1_ > LOOSE * D(EPS) else
+                                                  "same sign as b'" if sign > 0 else "-b', ACCEPTABLE (ACC-1 endpoint_sign)"))
+print("DEFECT SHOWN" if shown else "DEFECT NOT SHOWN")
+sys.exit(0 if shown else 1)

@@ -1,12 +1,15 @@
 #!/usr/bin/env node
 // rotorcert reproducer: ganja.js, clause EDGE-6 (spec/SPEC.md 9, tolerance class outcome).
-// EDGE-6: a zero quaternion, a dual quaternion whose real part is zero and a zero axis (AXANG-2) are
-// DOMAIN_ERROR: every output component a quiet NaN (or, for a library without a status channel, an
-// exception). ganja's Normalized returns a zero element unchanged ('if (!l) return this' in Cl(3,0),
-// 'if (s==0) return this' in PGA), so a zero rotor, a zero axis and the motor T(t) R of a zero rotor all
-// come back as ordinary finite values. Zero axis (AXANG-2) and zero rotation in T(t) R (DQ-1) are the
-// rotorcert expected failures of those clauses; zero inputs are judged here (EDGE-6).
-// Source (ganja.js 1.0.204): ganja.js:234 (Cl(3,0)) and ganja.js:230 (PGA). Upstream tracker: no report found.
+// EDGE-6: a dual quaternion (motor) whose real part is zero is DOMAIN_ERROR: every output component a
+// quiet NaN (or, for a library without a status channel, an exception). Since spec 2.2.0, ACC-1
+// zero_sentinel also accepts status OK with every output component +-0, or exactly the output of the
+// identity motion substituted for the zero real part. ganja's PGA Normalized returns a motor whose
+// M ~M has a zero scalar unchanged ('if (s==0) return this', ganja.js:230): the zero-real-part motor
+// -e01 (a pure translation part, no rotation) comes back as itself, a finite non-normalised motor that
+// is neither an error, nor zero, nor the identity. (The zero rotor's other answers, Normalized of 0 =
+// 0, products with 0 = 0, the identity from Exp(0) for a zero axis, are ACC-1 zero_sentinel /
+// algebraic_product answers since 2.2.0 and no longer a defect.)
+// Source (ganja.js 1.0.204): ganja.js:227-232 (get Normalized, PGA branch). Upstream tracker: no report found.
 // Run: NODE_PATH=build/adapters/ganja/node_modules node EDGE-6.js   (exit 0 shown, 1 not shown, 77 skip)
 'use strict';
 let Algebra, VERSION;
@@ -28,40 +31,28 @@ function hex(x) {
 }
 const show = (v) => '[' + v.map(hex).join(', ') + ']';
 
-// Conventions. Cl(3,0): basis 1, e1, e2, e3, e12, e13, e23, e123 (e31 = -e13); quaternion (w, x, y, z)
-// <-> rotor w - x e23 - y e31 - z e12 (spec Q2R-1) = [w, 0,0,0, -z, +y, -x, 0]. Axis-angle (Q2R-4):
-// exp(-I u theta/2) with u the normalised axis; in Cl(3,0) ganja's Dual is the product with e123.
-// PGA Cl(3,0,1): basis 1, e0..e3, e01, e02, e03, e12, e13, e23, e012, e013, e023, e123, e0123; the
-// dual quaternion [r; d] is the motor w_r - x_r e23 - y_r e31 - z_r e12 - x_d e01 - y_d e02 - z_d e03 -
-// w_d e0123 (MOTOR-1), and the translator T(t) = exp(-(tx e01 + ty e02 + tz e03)/2) = 1 - t e0/2 (ALG-7).
-const C3 = Algebra({p: 3, baseType: Float64Array});
+// Conventions (MOTOR-1): the dual quaternion [r; d], each (x, y, z, w), is the PGA Cl(3,0,1) motor
+// w_r - x_r e23 - y_r e31 - z_r e12 - x_d e01 - y_d e02 - z_d e03 - w_d e0123 (ganja names e13 = -e31).
 const PGA = Algebra({p: 3, r: 1, baseType: Float64Array});
-const rotor = (w, x, y, z) => C3.Element(w, 0, 0, 0, -z, y, -x, 0);
-const quat = (R) => [R.s, -R.e23, R.e13, -R.e12];        // (w, x, y, z)
-const dq = (M) => [M.s, -M.e23, M.e13, -M.e12, -M.e0123, -M.e01, -M.e02, -M.e03];  // (w,x,y,z)_r, (w,x,y,z)_d
-
-console.log(`rotorcert reproducer: ganja.js ${VERSION} EDGE-6: Normalized returns a zero rotor unchanged, so zero quaternions, zero axes and zero motors give finite results instead of DOMAIN_ERROR`);
-let shown = false;
-function check(tag, call, input, fn) {
-  let out, threw = null;
-  try { out = fn(); } catch (e) { if (e instanceof TypeError || e instanceof ReferenceError) throw e; threw = e; }
-  const domainError = threw !== null || out.every(Number.isNaN);
-  shown = shown || !domainError;
-  console.log(`\n[${tag}] call:    ${call}\n    input:   ${input}`);
-  console.log(`    ganja:   ${threw ? 'throws ' + threw.constructor.name : show(out)}   -> ${domainError ? 'DOMAIN_ERROR' : 'an ordinary result (status OK)'}`);
-  console.log('    correct: DOMAIN_ERROR (every component NaN, or an exception)');
+function motor(d) {  // [x_r, y_r, z_r, w_r, x_d, y_d, z_d, w_d] -> PGA motor
+  const M = new PGA();
+  M.s = d[3]; M.e23 = -d[0]; M.e13 = d[1]; M.e12 = -d[2];
+  M.e01 = -d[4]; M.e02 = -d[5]; M.e03 = -d[6]; M.e0123 = -d[7];
+  return M;
 }
+const dualQuat = (M) => [-M.e23, M.e13, -M.e12, M.s, -M.e01, -M.e02, -M.e03, -M.e0123];
 
-check(1, 'C3.Element(w,0,0,0,-z,y,-x,0).Normalized', 'q (w,x,y,z) = ' + show([0, 0, 0, 0]),
-      () => quat(rotor(0, 0, 0, 0).Normalized));
-const theta = 1.5707963267948966;                         // pi/2 rounded
-check(2, 'C3.Vector(ux,uy,uz).Normalized.Dual.Scale(-theta/2).Exp()   (exp(-I u theta/2), AXANG-2)',
-      `theta = ${hex(theta)}  axis u = ${show([0, 0, 0])}`,
-      () => quat(C3.Vector(0, 0, 0).Normalized.Dual.Scale(-theta / 2).Exp()));
-check(3, 'PGA.Bivector(-tx/2,-ty/2,-tz/2,0,0,0).Exp().Mul(R.Normalized)   (T(t) R, DQ-1)',
-      'q (w,x,y,z) = ' + show([0, 0, 0, 0]) + '  t = ' + show([1, 0, 0]),
-      () => dq(PGA.Bivector(-1 / 2, 0, 0, 0, 0, 0).Exp().Mul(new PGA().Normalized)));
-check(4, 'C3.Element(w,0,0,0,-z,y,-x,0).Log()', 'q (w,x,y,z) = ' + show([0, 0, 0, 0]),
-      () => { const B = rotor(0, 0, 0, 0).Log(); return [-B.e23, B.e13, -B.e12]; });
-if (shown) { console.log('\nDEFECT SHOWN'); process.exit(0); }
-console.log('\nDEFECT NOT SHOWN'); process.exit(1);
+console.log(`rotorcert reproducer: ganja.js ${VERSION} EDGE-6: PGA Normalized returns a motor with a zero real part unchanged (finite, status OK) instead of DOMAIN_ERROR`);
+const d = [0, 0, 0, 0, 1, 0, 0, 0];                       // EX-EDGE-6-j: real part 0, dual part x = 1
+const out = dualQuat(motor(d).Normalized);
+const nonFinite = out.every((c) => !Number.isFinite(c));
+const allZero = out.every((c) => c === 0);
+const identity = out.every((c, i) => c === (i === 3 ? 1 : 0));   // the identity motion [0, 0, 0, 1, 0, 0, 0, 0]
+const shown = !(nonFinite || allZero || identity);
+console.log('  call:    motor(d).Normalized   (d [x,y,z,w]_real [x,y,z,w]_dual as the PGA motor of MOTOR-1)');
+console.log('  input:   d = ' + show(d));
+console.log('  ganja:   ' + show(out) + (shown ? '   (the input itself, status OK)  <-- DEFECT' : ''));
+console.log('  correct: DOMAIN_ERROR (every component NaN, or an exception); acceptable (ACC-1 zero_sentinel): ' +
+            show([0, 0, 0, 0, 0, 0, 0, 0]) + ' or the identity motion ' + show([0, 0, 0, 1, 0, 0, 0, 0]));
+if (shown) { console.log('DEFECT SHOWN'); process.exit(0); }
+console.log('DEFECT NOT SHOWN'); process.exit(1);
