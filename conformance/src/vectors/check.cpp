@@ -220,8 +220,13 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
     if (spec.find_clause(t.claimed_clauses[i]) == nullptr)
       throw VectorsError(results.file, "/implementation/claimed_clauses/" + std::to_string(i),
                          "\"" + t.claimed_clauses[i] + "\" is not a clause of spec " + spec.version);
-  // Meta clauses bind the suite, not implementations: a claim of one is not scored.
-  std::erase_if(t.claimed_clauses, [&](const std::string& id) { return spec.find_clause(id)->level == "Meta"; });
+  // Meta clauses bind the suite, not implementations: a claim of one is not scored. Hygiene
+  // clauses (section 9a) need the library's own calls, which a results file cannot show.
+  std::erase_if(t.claimed_clauses, [&](const std::string& id) {
+    const std::string& level = spec.find_clause(id)->level;
+    return level == "Meta" || level == "Hygiene";
+  });
+  std::erase(t.claimed_levels, std::string("Hygiene"));
   for (std::size_t i = 0; i < t.claimed_levels.size(); ++i)
     if (!contains(spec.levels, t.claimed_levels[i]) || t.claimed_levels[i] == "Meta")
       throw VectorsError(results.file, "/implementation/claimed_levels/" + std::to_string(i),
