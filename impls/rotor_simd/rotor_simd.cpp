@@ -416,7 +416,15 @@ HWY_INLINE Quat safe_scaled(const Quat& q) { return scale(q, pow2_scale(max_abs(
 
 /// x / |x| of a safely scaled quaternion: one division, then products.
 HWY_INLINE Quat unit_of_scaled(const Quat& qs) {
-  return scale(qs, hn::Div(hn::Set(D(), 1.0f), hn::Sqrt(dot(qs, qs))));
+  const D d;
+  Quat u = scale(qs, hn::Div(hn::Set(d, 1.0f), hn::Sqrt(dot(qs, qs))));
+  // A pure scalar (0, 0, 0, w) is exactly (0, 0, 0, +-1): w * (1 / sqrt(w^2)) is not always 1
+  // (nlerp of the identity with itself extrapolated to t = 1.15 gave 1 - 2^-24: EDGE-1).
+  const V zero = hn::Zero(d);
+  const M scalar_only = hn::And(hn::And(hn::And(hn::Eq(qs.x, zero), hn::Eq(qs.y, zero)), hn::Eq(qs.z, zero)),
+                                hn::And(hn::IsFinite(qs.w), hn::Ne(qs.w, zero)));  // 0 and NaN stay NaN
+  u.w = hn::IfThenElse(scalar_only, hn::CopySign(hn::Set(d, 1.0f), qs.w), u.w);
+  return u;
 }
 
 /// 1/sqrt(x) for x in [2^-60, 2^60] to about 2 ulp, for the normalisations inside slerp, nlerp
