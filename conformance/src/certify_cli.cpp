@@ -21,7 +21,7 @@ void add_certify_options(CLI::App& app, CertifyCli& o) {
   app.add_option("--search", o.search,
                  "Worst-case search: implementation calls per check spent walking ulps around the worst input (0 = none)")
       ->check(CLI::Range(0, 100000))->capture_default_str();
-  app.add_option("--level", o.levels, "Certify only this level (Core, Interp, Blend, Rigid, Skinning, Robust, Hygiene); repeatable");
+  app.add_option("--level", o.levels, "Certify only this level (Core, Interp, Blend, Rigid, Skinning, Extended, Robust, Hygiene); repeatable");
   app.add_option("--clause", o.clauses, "Certify only this clause (e.g. SLERP-1); repeatable");
   app.add_option("--timeout", o.timeout_s, "Wall-clock limit per clause, seconds (TIMEOUT beyond)")
       ->check(CLI::PositiveNumber)->capture_default_str();
@@ -42,7 +42,7 @@ certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o
       opt.levels.push_back(l);
   for (const std::string& l : o.levels)
     if (l == "Meta" || std::find(spec.levels.begin(), spec.levels.end(), l) == spec.levels.end())
-      throw std::invalid_argument("--level " + l + ": not an implementation level (Core, Interp, Blend, Rigid, Skinning, Robust, Hygiene)");
+      throw std::invalid_argument("--level " + l + ": not an implementation level (Core, Interp, Blend, Rigid, Skinning, Extended, Robust, Hygiene)");
   for (const std::string& c : o.clauses) {
     const spec::Clause* cl = spec.find_clause(c);
     if (cl == nullptr) throw std::invalid_argument("--clause " + c + ": no such clause in the spec");

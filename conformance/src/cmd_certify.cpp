@@ -127,7 +127,7 @@ Command add_certify(CLI::App& parent) {
       ->capture_default_str();
   app->add_option("--require-level", args->required_levels,
                   "Exit 0 only if every table meets this level (met or met with warnings); repeatable")
-      ->check(CLI::IsMember({"Core", "Interp", "Blend", "Rigid", "Skinning", "Robust", "Hygiene"}));
+      ->check(CLI::IsMember({"Core", "Interp", "Blend", "Rigid", "Skinning", "Extended", "Robust", "Hygiene"}));
   app->add_flag("--require-claimed-levels", args->require_claimed_levels,
                 "Exit 0 only if every table meets every level it claims");
   add_certify_options(*app, args->common);

@@ -1,6 +1,7 @@
 // The differential engine judged on implementations whose defects are known: a correct one, one
 // a few eps off, one that forgets to normalise, one that hides bad input behind a valid-looking
 // answer, one that reports DOMAIN_ERROR but leaves numbers behind, and one without the op.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/impl_table.hpp>
+#include <rotorcert/registry.hpp>
 #include <rotorcert/testing/clause.hpp>
 
 namespace {
@@ -481,4 +483,170 @@ TEST(Engine, StateLeftByAnEarlierCallFails) {
   const auto r = run(ri::table<NormalizeBatch<Hygiene::sticky_flag>>(), "HYG-3");
   EXPECT_EQ(r.outcome, engine::Outcome::fail);
   EXPECT_NE(r.worst_detail.find("after"), std::string::npos) << r.worst_detail;
+}
+
+// ---- ABI version 3: to_angle, to_axis, sqrt, dq_to_rotation_translation ----------------------
+
+namespace {
+
+using V = ri::Vec3<double>;
+using D = ri::DualQuat<double>;
+
+/// Careful and careless forms of the four operations of ABI version 3, each a table of its own.
+enum class V3Impl { right, acos_angle, glm_axis, minus_axis, no_root, minus_root, unnormalised_translation };
+
+template <V3Impl K>
+struct V3Ops : Normalizer<0> {
+  static bool ok(const Q& q) {
+    for (double x : q)
+      if (!std::isfinite(x)) return false;
+    return q[0] != 0 || q[1] != 0 || q[2] != 0 || q[3] != 0;
+  }
+  static double vnorm(const Q& q) { return std::hypot(q[0], q[1], q[2]); }
+  static ri::Status to_angle(const Q& q, double& angle) {
+    if (!ok(q)) return ri::Status::domain_error;
+    if constexpr (K == V3Impl::acos_angle) {  // 2 acos(w/|q|): half the digits lost near the identity
+      angle = 2 * std::acos(std::clamp(q[3] / std::hypot(vnorm(q), q[3]), -1.0, 1.0));
+    } else {
+      angle = 2 * std::atan2(vnorm(q), q[3]);  // AXANG-1's theta
+    }
+    return ri::Status::ok;
+  }
+  static ri::Status to_axis(const Q& q, V& axis) {
+    if (!ok(q)) return ri::Status::domain_error;
+    const double n = vnorm(q);
+    if (n == 0) {
+      axis = {0, 0, 1};
+      return ri::Status::ok;
+    }
+    if constexpr (K == V3Impl::glm_axis) {  // v / sqrt(1 - w^2) of the normalised q: cancels near w = +-1
+      const double m = std::hypot(n, q[3]), w = q[3] / m, s = std::sqrt(std::max(0.0, 1 - w * w));
+      if (s <= 0) axis = {0, 0, 1};
+      else axis = {q[0] / m / s, q[1] / m / s, q[2] / m / s};
+    } else {
+      const double sign = K == V3Impl::minus_axis && q[3] < 0 ? -1.0 : 1.0;  // -u for w < 0 (Eigen's range)
+      axis = {sign * q[0] / n, sign * q[1] / n, sign * q[2] / n};
+    }
+    return ri::Status::ok;
+  }
+  static ri::Status sqrt(const Q& q, Q& out) {
+    if (!ok(q)) return ri::Status::domain_error;
+    Q u;
+    normalize_exact(q, u);
+    const double n = vnorm(u);
+    if constexpr (K == V3Impl::no_root) {  // the rotation itself, not its square root
+      out = u;
+      return ri::Status::ok;
+    }
+    if (n == 0 && u[3] < 0) {
+      out = {0, 0, 1, 0};
+      return ri::Status::ok;
+    }
+    const double a = u[3] >= 0 ? 1 + u[3] : n * n / (1 - u[3]);  // 1 + w without cancellation
+    Q s{u[0], u[1], u[2], a};
+    normalize_exact(s, out);
+    if constexpr (K == V3Impl::minus_root)
+      for (double& c : out) c = -c;
+    return ri::Status::ok;
+  }
+  static ri::Status dq_to_rotation_translation(const D& d, Q& q, V& t) {
+    const Q r{d[0], d[1], d[2], d[3]}, e{d[4], d[5], d[6], d[7]};
+    for (double x : d)
+      if (!std::isfinite(x)) return ri::Status::domain_error;
+    if (!ok(r)) return ri::Status::domain_error;
+    const double n2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3];
+    // t = 2 vec(e r*) / |r|^2 = 2 (r_w e_v - e_w r_v + r_v x e_v) / |r|^2 (the part of e along r drops out).
+    const double k = K == V3Impl::unnormalised_translation ? 2.0 : 2.0 / n2;
+    t = {k * (r[3] * e[0] - e[3] * r[0] + r[1] * e[2] - r[2] * e[1]),
+         k * (r[3] * e[1] - e[3] * r[1] + r[2] * e[0] - r[0] * e[2]),
+         k * (r[3] * e[2] - e[3] * r[2] + r[0] * e[1] - r[1] * e[0])};
+    normalize_exact(r, q);
+    return ri::Status::ok;
+  }
+};
+
+bool accepted_as(const engine::ClauseResult& r, const char* convention) {
+  for (const auto& a : r.acceptable)
+    if (a.convention == convention && a.count > 0) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(Engine, ToAngleByAtan2PassesAndByAcosFails) {
+  RC_CLAUSE("AXANG-3");
+  EXPECT_EQ(run(ri::table<V3Ops<V3Impl::right>>(), "AXANG-3").outcome, engine::Outcome::pass);
+  // The angle sweep reaches 1e-9 rad, where 2 acos(w) has no digit left.
+  const auto wrong = run(ri::table<V3Ops<V3Impl::acos_angle>>(), "AXANG-3");
+  EXPECT_EQ(wrong.outcome, engine::Outcome::fail);
+  EXPECT_EQ(wrong.worst_op, "to_angle");
+}
+
+TEST(Engine, ToAxisAlonePassesAndTheOtherRangeIsAcceptable) {
+  RC_CLAUSE("AXANG-4");
+  RC_CLAUSE("ACC-1");
+  const auto right = run(ri::table<V3Ops<V3Impl::right>>(), "AXANG-4");
+  EXPECT_EQ(right.outcome, engine::Outcome::pass);
+  EXPECT_TRUE(right.acceptable.empty());
+  // -u where w < 0, the axis of the angle 2 pi - theta in [0, pi] (Eigen, nalgebra): ACCEPTABLE.
+  const auto flipped = run(ri::table<V3Ops<V3Impl::minus_axis>>(), "AXANG-4");
+  EXPECT_EQ(flipped.outcome, engine::Outcome::pass);
+  EXPECT_TRUE(accepted_as(flipped, "angle_range"));
+  // v / sqrt(1 - w^2) loses the axis near the identity and near a full turn: FAIL.
+  const auto wrong = run(ri::table<V3Ops<V3Impl::glm_axis>>(), "AXANG-4");
+  EXPECT_EQ(wrong.outcome, engine::Outcome::fail);
+  EXPECT_NE(wrong.worst_input.find("0x"), std::string::npos) << wrong.worst_input;
+}
+
+TEST(Engine, SquareRootPassesAndTheRotationItselfFails) {
+  RC_CLAUSE("SQRT-1");
+  const auto right = run(ri::table<V3Ops<V3Impl::right>>(), "SQRT-1");
+  EXPECT_EQ(right.outcome, engine::Outcome::pass);
+  EXPECT_TRUE(right.acceptable.empty());
+  EXPECT_EQ(run(ri::table<V3Ops<V3Impl::no_root>>(), "SQRT-1").outcome, engine::Outcome::fail);
+  // -s is the other square root and the same rotation: ACCEPTABLE under `sign`, as MAT-2's -q.
+  const auto minus = run(ri::table<V3Ops<V3Impl::minus_root>>(), "SQRT-1");
+  EXPECT_EQ(minus.outcome, engine::Outcome::pass);
+  EXPECT_TRUE(accepted_as(minus, "sign"));
+}
+
+TEST(Engine, RotationAndTranslationOfADualQuaternionNeedTheNormalisation) {
+  RC_CLAUSE("DQ-7");
+  EXPECT_EQ(run(ri::table<V3Ops<V3Impl::right>>(), "DQ-7").outcome, engine::Outcome::pass);
+  // 2 d r* without the division by |r|^2: 2 % off on the family of real parts 1 +- 0.01.
+  const auto wrong = run(ri::table<V3Ops<V3Impl::unnormalised_translation>>(), "DQ-7");
+  EXPECT_EQ(wrong.outcome, engine::Outcome::fail);
+  EXPECT_EQ(wrong.worst_op, "dq_to_rotation_translation");
+  // A zero real part is outside the domain (EDGE-6).
+  EXPECT_EQ(run(ri::table<V3Ops<V3Impl::right>>(), "EDGE-6").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, AVersion2TableLoadsWithoutTheVersion3Ops) {
+  RC_CLAUSE("RESULT-1");
+  const rc_impl* v3 = ri::table<V3Ops<V3Impl::right>>();
+  ASSERT_EQ(v3->abi_version, RC_ABI_VERSION);
+  for (const char* op : {"to_angle", "to_axis", "sqrt", "dq_to_rotation_translation"})
+    EXPECT_TRUE(engine::supports(*v3, op)) << op;
+  // A table built against ABI version 2 ends before f32_v3 / f64_v3: the suite must not read them,
+  // whatever bytes follow (here the pointers of a version-3 table are still there).
+  rc_impl v2 = *v3;
+  v2.abi_version = 2;
+  EXPECT_EQ(impl::validate_table(v2), "");
+  for (const char* op : {"to_angle", "to_axis", "sqrt", "dq_to_rotation_translation"})
+    EXPECT_FALSE(engine::supports(v2, op)) << op;
+  EXPECT_TRUE(engine::supports(v2, "normalize"));
+  for (const char* clause : {"AXANG-3", "AXANG-4", "SQRT-1", "DQ-7"}) {
+    const auto r = run(&v2, clause);
+    EXPECT_EQ(r.outcome, engine::Outcome::not_supported) << clause;
+    EXPECT_EQ(r.cases, 0u) << clause;
+  }
+  EXPECT_EQ(run(&v2, "NORM-1").outcome, engine::Outcome::pass);
+  // What a version-2 host is handed by an entry point built against this header: the same table
+  // stamped 2 (and 1 for a version-1 host), so the host's own version check accepts it.
+  const rc_impl* asked2 = ri::entry<V3Ops<V3Impl::right>>(2, 0);
+  ASSERT_NE(asked2, nullptr);
+  EXPECT_EQ(asked2->abi_version, 2u);
+  EXPECT_FALSE(engine::supports(*asked2, "sqrt"));
+  EXPECT_EQ(ri::entry<V3Ops<V3Impl::right>>(1, 0)->abi_version, 1u);
+  EXPECT_EQ(ri::entry<V3Ops<V3Impl::right>>(RC_ABI_VERSION + 1, 0), nullptr);
 }

@@ -236,6 +236,25 @@ def op_to_axis_angle(f, m, k):  # AXANG-1: theta = 2 atan2(|v|, w), u = v/|v| or
     return {"out_angle": [theta], "out_axis": axis}
 
 
+def op_to_angle(f, m, k):  # AXANG-3: AXANG-1's theta alone
+    return {"out_angle": op_to_axis_angle(f, m, k)["out_angle"]}
+
+
+def op_to_axis(f, m, k):  # AXANG-4: AXANG-1's u alone (v/|v|, (0, 0, 1) for v = 0)
+    return {"out_axis": op_to_axis_angle(f, m, k)["out_axis"]}
+
+
+def op_sqrt(f, m, k):
+    """SQRT-1: s = (1 + q^)/|1 + q^| with q^ = q/|q| (s^2 = q^, s.w > 0); q^ = -1: (0, 0, 1, 0)."""
+    q = rotation_input(f, m, "q")
+    if is_zero(vec(q)) and q[0] < 0:
+        return {"out_q": [mpf(0), mpf(0), mpf(1), mpf(0)]}
+    u = qunit(q)
+    v2 = sum(c * c for c in vec(u))
+    a = 1 + u[0] if u[0] >= 0 else v2 / (1 - u[0])  # 1 + w without cancellation
+    return {"out_q": flat_q(qunit((a, u[1], u[2], u[3])))}
+
+
 def op_from_axis_angle(f, m, k):  # AXANG-2
     need(finite(m["angle"]) and finite(m["axis"]) and not is_zero(m["axis"]))
     theta, u = m["angle"][0], m["axis"]
@@ -410,6 +429,11 @@ def op_dq_from_rotation_translation(f, m, k):  # DQ-1
     return {"out_d": flat_d(from_rotation_translation(q, m["t"]))}
 
 
+def op_dq_to_rotation_translation(f, m, k):  # DQ-7: q = r/|r|, t = 2 d' r'* of DQ-4(sigma)
+    u = dnormalize(dual_input(m["d"]))
+    return {"out_q": flat_q(u[0]), "out_t": translation(u)}
+
+
 def op_dq_compose(f, m, k):  # DQ-2: the product of the inputs as given, no normalisation
     return {"out_d": flat_d(dmul(dual_input(m["a"]), dual_input(m["b"])))}
 
@@ -528,6 +552,11 @@ OPS = {
     "rotate_about_axis": op_rotate_about_axis,
     "skin_linear": op_skin_linear,
     "skin_dual_quaternion": op_skin_dual_quaternion,
+    # ABI version 3
+    "to_angle": op_to_angle,
+    "to_axis": op_to_axis,
+    "sqrt": op_sqrt,
+    "dq_to_rotation_translation": op_dq_to_rotation_translation,
 }
 
 # ---- comparison with the export ----------------------------------------------------------------------
@@ -610,7 +639,8 @@ def check_vector(op, fmt, test):
 
 
 REQUIRED = ["normalize", "compose", "inverse", "apply_vector", "to_matrix", "log", "exp", "slerp", "nlerp", "blend_qlb",
-            "dq_from_rotation_translation", "dq_compose", "dq_apply_point", "dq_normalize", "dq_blend"]
+            "dq_from_rotation_translation", "dq_compose", "dq_apply_point", "dq_normalize", "dq_blend",
+            "to_angle", "to_axis", "sqrt", "dq_to_rotation_translation"]
 
 
 def main(argv):

@@ -242,7 +242,7 @@ struct Dq {
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       "NORM-1", "COMPOSE-1", "INV-1",  "APPLY-1", "QUAT-2",                                  // Core (partial)
-      "DQ-1",   "DQ-2",      "DQ-3",   "DQ-4",    "DQ-5",   "DQ-6",   "AXIS-1",              // Rigid
+      "DQ-1",   "DQ-2",      "DQ-3",   "DQ-4",    "DQ-5",   "DQ-6",   "DQ-7",   "AXIS-1",    // Rigid
       "SKIN-1", "SKIN-2",    "SKIN-3",                                                       // Skinning
       "EDGE-1", "EDGE-2",    "EDGE-3", "EDGE-4",  "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9",  // Robust
       nullptr};
@@ -299,6 +299,15 @@ struct Dq {
   static Status dq_apply_point(const rci::DualQuat<S>& d, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
     if (!valid(load(d)) || !finite(load(p))) return Status::domain_error;
     out = store(apply_point(load(d), load(p)));
+    return Status::ok;
+  }
+
+  /// DQ-7 (ABI version 3): DQ-4, then q = r' and t = 2 vec(d' r'*) (DQ-1 read backwards).
+  static Status dq_to_rotation_translation(const rci::DualQuat<S>& d, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    if (!valid(load(d))) return Status::domain_error;
+    const Dual<S> u = normalized(load(d));
+    q = store(u.r);
+    t = store(translation(u));
     return Status::ok;
   }
 

@@ -68,7 +68,7 @@ struct EigenQuat {
   static constexpr const char* const clauses[] = {
       // Core
       "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "APPLY-3", "MAT-1", "MAT-2", "AXANG-1",
-      "AXANG-2",
+      "AXANG-2", "AXANG-3", "AXANG-4",
       // Interp: the ops Eigen has (no LOG-*, EXP-*)
       "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
       // Blend: QLB only
@@ -137,6 +137,18 @@ struct EigenQuat {
     const Eigen::AngleAxis<S> aa(to_eigen(q));
     angle = aa.angle();
     axis = from_eigen(EVec3<S>(aa.axis()));
+    return Status::ok;
+  }
+  // ABI version 3: AngleAxis(q).angle() and .axis() apart, as an Eigen user queries them (AXANG-3,
+  // AXANG-4): the angle in [0, pi] and the axis that goes with it (-u for w < 0), ACC-1
+  // angle_range. AngleAxis(q) "implicitly normalizes the quaternion" (AngleAxis.h). Eigen has no
+  // quaternion square root (sqrt stays NULL).
+  static Status to_angle(const Quat<S>& q, S& angle) {
+    angle = Eigen::AngleAxis<S>(to_eigen(q)).angle();
+    return Status::ok;
+  }
+  static Status to_axis(const Quat<S>& q, Vec3<S>& axis) {
+    axis = from_eigen(EVec3<S>(Eigen::AngleAxis<S>(to_eigen(q)).axis()));
     return Status::ok;
   }
   // Quaternion(AngleAxis): Eigen documents a unit axis and uses it as given.

@@ -84,15 +84,17 @@ struct GlmQuat {
       "arithmetic is certified. Declares GLM's documented preconditions (DECL-1): a unit axis "
       "for angleAxis, a pure rotation matrix for quat_cast, t in [0, 1] for lerp. "
       "No ScLERP (NOT_SUPPORTED). Rigid motions via gtx/dual_quaternion; LBS with mat3_cast "
-      "matrices divided by the weight sum; AXIS-1 as c + angleAxis(angle, normalize(u)) * (p - c).";
+      "matrices divided by the weight sum; AXIS-1 as c + angleAxis(angle, normalize(u)) * (p - c). "
+      "ABI v3: to_angle = glm::angle, to_axis = glm::axis, sqrt = glm::sqrt (pow(q, 0.5)); GLM has no "
+      "dual quaternion -> rotation and translation call (NOT_SUPPORTED).";
   static constexpr std::uint32_t levels =
       RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       // Core
       "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "APPLY-3", "MAT-1", "MAT-2", "AXANG-1",
-      "AXANG-2",
+      "AXANG-2", "AXANG-3", "AXANG-4",
       // Interp
-      "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
+      "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SQRT-1", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
       // Blend (no log-blend in GLM)
       "QLB-1",
       // Rigid (no ScLERP in GLM: DQ-5 not claimed)
@@ -155,6 +157,16 @@ struct GlmQuat {
     axis = from_glm(glm::axis(g));
     return Status::ok;
   }
+  // ABI version 3: glm::angle and glm::axis apart, as a GLM user queries them (AXANG-3, AXANG-4).
+  static Status to_angle(const Quat<S>& q, S& angle) {
+    angle = glm::angle(to_glm(q));
+    return Status::ok;
+  }
+  // 1 - w^2, then v / sqrt(1 - w^2): the axis is lost for small angles (EDGE-2's defect).
+  static Status to_axis(const Quat<S>& q, Vec3<S>& axis) {
+    axis = from_glm(glm::axis(to_glm(q)));
+    return Status::ok;
+  }
   // glm::angleAxis documents a unit axis and does not normalise it: passed as given.
   static Status from_axis_angle(const S& angle, const Vec3<S>& axis, Quat<S>& out) {
     out = from_glm(glm::angleAxis(angle, to_glm(axis)));
@@ -173,6 +185,14 @@ struct GlmQuat {
   }
   static Status exp(const Vec3<S>& v, Quat<S>& out) {
     out = from_glm(glm::exp(glm::qua<S>(S(0), v[0], v[1], v[2])));
+    return Status::ok;
+  }
+  // ext/quaternion_exponential.hpp: sqrt(q) = pow(q, 0.5), which takes the angle as asin(|v|/|q|)
+  // where |w|/|q| > cos(1/2) (for w < 0 too: the wrong branch near -1), returns (sqrt(w), 0, 0, 0)
+  // where |v|^2 < epsilon (the axis of angles below 2 sqrt(epsilon) is lost) and scales the result
+  // by |q|^(1/2) (no normalisation). Kept as GLM has it (SQRT-1 reports it).
+  static Status sqrt(const Quat<S>& q, Quat<S>& out) {
+    out = from_glm(glm::sqrt(to_glm(q)));
     return Status::ok;
   }
   // Flips b iff dot < 0 strictly; acos of the dot; lerp (not normalised) above 1 - epsilon.

@@ -113,7 +113,7 @@ struct MotorPga {
       "PGA Cl(3,0,1) motors (hand-expanded products, closed-form exp/log) behind the dual-quaternion ABI";
   static constexpr std::uint32_t levels = RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
-      "DQ-1",   "DQ-2",   "DQ-3",   "DQ-4",   "DQ-5",   "DQ-6",   "AXIS-1",                      // Rigid
+      "DQ-1",   "DQ-2",   "DQ-3",   "DQ-4",   "DQ-5",   "DQ-6",   "DQ-7",   "AXIS-1",            // Rigid
       "SKIN-2", "SKIN-3",                                                                        // Skinning
       "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-9",  // Robust (EDGE-8: no quaternion ops)
       nullptr};
@@ -121,6 +121,17 @@ struct MotorPga {
   static Status dq_from_rotation_translation(const rci::Quat<S>& q, const rci::Vec3<S>& t, rci::DualQuat<S>& out) {
     if (!valid_rotation(q) || !finite(t)) return Status::domain_error;
     out = pga::to_dual_quaternion(rigid(q, t));
+    return Status::ok;
+  }
+
+  /// DQ-7 (ABI version 3) in the algebra: the unit motor M = T R of the input; R is its Euclidean
+  /// (real) part read back by MOTOR-1, t the image M O ~M of the origin O = e123 (R O ~R = O).
+  static Status dq_to_rotation_translation(const rci::DualQuat<S>& d, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    if (!valid_dq(d)) return Status::domain_error;
+    const Motor<S> m = unit_motor(d);
+    const std::array<S, 8> u = pga::to_dual_quaternion(m);
+    q = {u[0], u[1], u[2], u[3]};
+    t = move_point(m, rci::Vec3<S>{S(0), S(0), S(0)});
     return Status::ok;
   }
 

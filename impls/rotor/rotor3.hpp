@@ -407,6 +407,35 @@ struct RotorOps {
     else axis = unit_vector(V{-r.e23, -r.e31, -r.e12});
     return ok;
   }
+  /// ABI version 3, AXANG-3 and AXANG-4: the two halves of to_axis_angle.
+  static Status to_angle(const Q& q, S& angle) {
+    V axis;
+    return to_axis_angle(q, angle, axis);
+  }
+  static Status to_axis(const Q& q, V& axis) {
+    S angle;
+    return to_axis_angle(q, angle, axis);
+  }
+  /// ABI version 3, SQRT-1: sqrt(R) = (1 + R)/|1 + R| for the unit rotor R = s + B of q, half the
+  /// angle about the same plane. For s < 0, 1 + s = |B|^2/(1 - s) (R ~R = 1) without cancellation,
+  /// and the common factor |B| is divided out first: (|B|/(1 - s), B/|B|), normalised. R = -1 has
+  /// every unit bivector as a root: -e12, the quaternion +z (LOG-2's axis).
+  static Status sqrt(const Q& q, Q& out) {
+    if (!is_rotation(q)) return bad;
+    const Rotor3<S> r = Conv::in(q);
+    const S n = norm3(r.e23, r.e31, r.e12);
+    if (r.s >= 0) {
+      out = Conv::out(normalized(Rotor3<S>{S(1) + r.s, r.e23, r.e31, r.e12}));
+      return ok;
+    }
+    if (n == 0) {
+      out = Conv::out(Rotor3<S>{S(0), S(0), S(0), S(-1)});
+      return ok;
+    }
+    const V u = unit_vector(V{r.e23, r.e31, r.e12});
+    out = Conv::out(normalized(Rotor3<S>{n / (S(1) - r.s), u[0], u[1], u[2]}));
+    return ok;
+  }
   /// Eq. 5: R = exp(-I u theta/2) = cos(theta/2) - I u sin(theta/2), u = axis/|axis|.
   static Status from_axis_angle(const S& angle, const V& axis, Q& out) {
     if (!std::isfinite(angle) || !all_finite(axis) || (axis[0] == 0 && axis[1] == 0 && axis[2] == 0)) return bad;

@@ -25,9 +25,10 @@ struct Method2 : rotorcert::rotor::PhiReadout {
 
 constexpr const char* kClauses[] = {
     // Core
-    "QUAT-2", "AXANG-1", "AXANG-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "APPLY-3", "MAT-1", "MAT-2",
+    "QUAT-2", "AXANG-1", "AXANG-2", "AXANG-3", "AXANG-4", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2",
+    "APPLY-3", "MAT-1", "MAT-2",
     // Interp
-    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
+    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SQRT-1", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
     // Blend
     "QLB-1", "LOGBLEND-1",
     // Skinning (linear blend skinning only)

@@ -57,6 +57,12 @@ std::string validate_table(const rc_impl& t) {
         if (std::strchr(list[i], ':') == nullptr)
           return std::string(t.name) + ": declaration \"" + list[i] + "\" is not of the form op:id (DECL-1)";
       }
+  if (t.abi_version >= 3) {
+    if (t.scalar == RC_SCALAR_FLOAT32 && t.f64_v3 != nullptr)
+      return std::string(t.name) + ": float table must not set f64_v3 (ABI version 3)";
+    if (t.scalar == RC_SCALAR_FLOAT64 && t.f32_v3 != nullptr)
+      return std::string(t.name) + ": double table must not set f32_v3 (ABI version 3)";
+  }
   return {};
 }
 
@@ -72,8 +78,8 @@ std::unique_ptr<Plugin> Plugin::load(const std::string& path) {
     throw PluginError("plugin " + path + " does not export " + RC_IMPL_ENTRY_SYMBOL);
   rc_impl_entry_fn entry;
   std::memcpy(&entry, &symbol, sizeof entry);  // object pointer to function pointer, POSIX-style
-  // The newest ABI the plugin speaks: version 2, else version 1 (a plugin built before the
-  // declarations existed answers NULL to 2).
+  // The newest ABI the plugin speaks: version 3, else 2, else 1 (a plugin built before the
+  // version-3 operations answers NULL to 3, one built before the declarations NULL to 2 as well).
   std::uint32_t version = RC_ABI_VERSION;
   while (version > RC_ABI_VERSION_MIN && entry(version, 0) == nullptr) --version;
   for (std::uint32_t i = 0;; ++i) {

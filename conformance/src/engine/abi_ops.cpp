@@ -70,6 +70,19 @@ Real rigid_scale(const DQ& d, const V3& p) {
 
 Real unit_scale(const Values&, std::size_t) { return Real(1); }
 
+/// SQRT-1: for finite nonzero q with q^ = q/|q| != -1, s = (1 + q^)/|1 + q^| (the unique s with
+/// s^2 = q^ and s.w > 0: half the angle of AXANG-1 about the same axis); q^ = -1 (v = 0, w < 0):
+/// s = (0, 0, 1, 0), +z exactly (LOG-2's axis). 1 + w^ is formed as |v^|^2 / (1 - w^) for w^ < 0,
+/// without cancellation.
+ref::Result<Quat> sqrt_reference(const Quat& q) {
+  if (!ref::finite(q) || ref::is_zero(q)) return ref::domain_error<Quat>();
+  if (q.x == 0 && q.y == 0 && q.z == 0 && q.w < 0) return {Quat{Real(0), Real(0), Real(0), Real(1)}, ref::Status::ok};
+  const Quat u = ref::normalized(q);
+  const Real v2 = u.x * u.x + u.y * u.y + u.z * u.z;
+  const Real a = u.w >= 0 ? Real(1) + u.w : v2 / (Real(1) - u.w);
+  return {ref::normalized(Quat{a, u.x, u.y, u.z}), ref::Status::ok};
+}
+
 std::vector<AbiOp> build() {
   const Array q{"q", 4}, a{"a", 4}, b{"b", 4}, v{"v", 3}, t{"t", 1}, m{"m", 9}, da{"a", 8}, db{"b", 8}, d{"d", 8};
   auto out = [](const char* name, int stride, Measure measure) { return Array{name, stride, false, measure}; };
@@ -168,6 +181,35 @@ std::vector<AbiOp> build() {
                                                    std::span<const Real>(in[2]), vec3(in[3])));
        },
        skin_scale});
+  // ---- ABI version 3 ----
+  add({"to_angle", {q}, {out("out_angle", 1, Measure::angle)}, false,
+       [](const Values& in, std::size_t) {
+         const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));  // AXANG-3: AXANG-1's angle
+         return ReferenceResult{r.status, {flat(r.value.angle)}};
+       }, {}});
+  add({"to_axis", {q}, {out("out_axis", 3, Measure::vector)}, false,
+       [](const Values& in, std::size_t) {
+         const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));  // AXANG-4: AXANG-1's axis
+         return ReferenceResult{r.status, {flat(r.value.axis)}};
+       }, {}});
+  add({"sqrt", {q}, {out("out_q", 4, Measure::canonical_rotation)}, false,
+       [](const Values& in, std::size_t) { return one(sqrt_reference(quat(in[0]))); }, {}});
+  add({"dq_to_rotation_translation", {d}, {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)},
+       false,
+       [](const Values& in, std::size_t) {
+         // DQ-7: the rotation r/|r| and the translation 2 d r*/|r|^2 of DQ-4(sigma) (DQ-1 inverted).
+         const DQ sigma = dq(in[0]);
+         const auto unit = clause::DQ_4_normalize(sigma);
+         const auto shift = clause::DQ_1_translation(sigma);
+         const bool ok = unit.status == ref::Status::ok && shift.status == ref::Status::ok;
+         return ReferenceResult{ok ? ref::Status::ok : ref::Status::domain_error,
+                                {flat(unit.value.real), flat(shift.value)}};
+       },
+       [](const Values& in, std::size_t) {
+         const DQ sigma = dq(in[0]);
+         if (!ref::finite(sigma) || ref::is_zero(sigma.real)) return Real(1);
+         return std::max(Real(1), length(clause::dual_quaternion_translation(sigma)));
+       }});
   return ops;
 }
 
@@ -217,6 +259,45 @@ int call_ops(const Ops& o, const std::string& op, std::size_t n, std::size_t k, 
   return -1;
 }
 
+/// The operations of ABI version 3 (rc_ops3_*), same conventions as call_ops.
+template <class S, class Ops3>
+int call_ops3(const Ops3& o, const std::string& op, std::size_t n, const std::vector<const void*>& in,
+              const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
+  auto I = [&](std::size_t i) { return cin<S>(in, i); };
+  auto O = [&](std::size_t i) { return cout<S>(out, i); };
+#define RC_CALL(slot, ...)                       \
+  if (op == #slot) {                             \
+    if (o.slot == nullptr) return -1;            \
+    return probe_only ? 0 : (o.slot)(__VA_ARGS__); \
+  }
+  RC_CALL(to_angle, n, I(0), O(0), st)
+  RC_CALL(to_axis, n, I(0), O(0), st)
+  RC_CALL(sqrt, n, I(0), O(0), st)
+  RC_CALL(dq_to_rotation_translation, n, I(0), O(0), O(1), st)
+#undef RC_CALL
+  return -1;
+}
+
+/// Whether op is one of ABI version 3 (rc_ops3_*).
+bool is_v3_op(const std::string& op) {
+  return op == "to_angle" || op == "to_axis" || op == "sqrt" || op == "dq_to_rotation_translation";
+}
+
+/// Calls (or probes) op through the part of the table that holds it: a version-3 op only through
+/// f32_v3 / f64_v3 of a table whose abi_version is >= 3 (an older table's memory ends before them).
+int dispatch(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
+             const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status, bool probe) {
+  if (is_v3_op(op)) {
+    if (table.abi_version < 3) return -1;
+    if (table.scalar == RC_SCALAR_FLOAT32 && table.f32_v3) return call_ops3<float>(*table.f32_v3, op, n, in, out, status, probe);
+    if (table.scalar == RC_SCALAR_FLOAT64 && table.f64_v3) return call_ops3<double>(*table.f64_v3, op, n, in, out, status, probe);
+    return -1;
+  }
+  if (table.scalar == RC_SCALAR_FLOAT32 && table.f32) return call_ops<float>(*table.f32, op, n, k, in, out, status, probe);
+  if (table.scalar == RC_SCALAR_FLOAT64 && table.f64) return call_ops<double>(*table.f64, op, n, k, in, out, status, probe);
+  return -1;
+}
+
 }  // namespace
 
 const std::vector<AbiOp>& abi_ops() {
@@ -247,9 +328,7 @@ const AbiOp& judged_op(const std::string& clause, const std::string& op) {
 
 int call(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
          const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status) {
-  if (table.scalar == RC_SCALAR_FLOAT32 && table.f32) return call_ops<float>(*table.f32, op, n, k, in, out, status, false);
-  if (table.scalar == RC_SCALAR_FLOAT64 && table.f64) return call_ops<double>(*table.f64, op, n, k, in, out, status, false);
-  return -1;
+  return dispatch(table, op, n, k, in, out, status, false);
 }
 
 Real block_norm(const std::vector<Real>& v, std::size_t from, std::size_t n) {
@@ -280,9 +359,7 @@ bool supports(const rc_impl& table, const std::string& op) {
   if (desc == nullptr) return false;
   const std::vector<const void*> in(desc->inputs.size(), nullptr);
   const std::vector<void*> out(desc->outputs.size(), nullptr);
-  if (table.scalar == RC_SCALAR_FLOAT32 && table.f32) return call_ops<float>(*table.f32, op, 0, 0, in, out, nullptr, true) == 0;
-  if (table.scalar == RC_SCALAR_FLOAT64 && table.f64) return call_ops<double>(*table.f64, op, 0, 0, in, out, nullptr, true) == 0;
-  return false;
+  return dispatch(table, op, 0, 0, in, out, nullptr, true) == 0;
 }
 
 }  // namespace rotorcert::engine

@@ -23,9 +23,10 @@ using V3 = ref::Vec3<Real>;
 const std::map<std::string, std::vector<std::string>>& clause_ops() {
   static const std::vector<std::string> quaternion_ops = {
       "normalize", "compose", "inverse", "apply_vector", "apply_bivector", "apply_trivector", "to_matrix",
-      "to_axis_angle", "log", "slerp", "nlerp", "blend_qlb", "blend_log"};
+      "to_axis_angle", "log", "slerp", "nlerp", "blend_qlb", "blend_log", "to_angle", "to_axis", "sqrt"};
   static const std::vector<std::string> rigid_ops = {"dq_from_rotation_translation", "dq_compose", "dq_apply_point",
-                                                    "dq_normalize", "dq_sclerp", "dq_blend"};
+                                                    "dq_normalize", "dq_sclerp", "dq_blend",
+                                                    "dq_to_rotation_translation"};
   static const std::vector<std::string> weighted_ops = {"blend_qlb", "blend_log", "dq_blend", "skin_linear",
                                                         "skin_dual_quaternion"};
   auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -45,6 +46,9 @@ const std::map<std::string, std::vector<std::string>>& clause_ops() {
       {"MAT-3", {"from_matrix"}},
       {"AXANG-1", {"to_axis_angle"}},
       {"AXANG-2", {"from_axis_angle"}},
+      {"AXANG-3", {"to_angle"}},
+      {"AXANG-4", {"to_axis"}},
+      {"SQRT-1", {"sqrt"}},
       {"LOG-1", {"log"}},
       {"LOG-2", {"log"}},
       {"EXP-1", {"exp"}},
@@ -63,6 +67,7 @@ const std::map<std::string, std::vector<std::string>>& clause_ops() {
       {"DQ-4", {"dq_normalize"}},
       {"DQ-5", {"dq_sclerp"}},
       {"DQ-6", {"dq_blend"}},
+      {"DQ-7", {"dq_to_rotation_translation"}},
       {"AXIS-1", {"rotate_about_axis"}},
       {"SKIN-1", {"skin_linear"}},
       {"SKIN-2", {"skin_dual_quaternion"}},
@@ -73,11 +78,11 @@ const std::map<std::string, std::vector<std::string>>& clause_ops() {
       {"EDGE-3", {"slerp", "nlerp", "blend_qlb", "dq_sclerp", "dq_blend"}},
       {"EDGE-4", {"compose", "inverse", "apply_vector", "to_matrix", "slerp", "nlerp", "blend_qlb", "dq_apply_point"}},
       {"EDGE-5", join(quaternion_ops, {"dq_apply_point", "dq_normalize", "dq_sclerp", "dq_blend", "from_axis_angle",
-                                       "rotate_about_axis"})},
+                                       "rotate_about_axis", "dq_to_rotation_translation"})},
       {"EDGE-6", join(join(quaternion_ops, rigid_ops), {"from_axis_angle", "rotate_about_axis"})},
       {"EDGE-7", join(join(quaternion_ops, rigid_ops), {"from_matrix", "from_axis_angle", "exp", "rotate_about_axis",
                                                         "skin_linear", "skin_dual_quaternion"})},
-      {"EDGE-8", {"normalize", "apply_vector", "to_matrix", "slerp", "nlerp", "log"}},
+      {"EDGE-8", {"normalize", "apply_vector", "to_matrix", "slerp", "nlerp", "log", "to_angle", "to_axis", "sqrt"}},
       {"EDGE-9", weighted_ops},
   };
   return table;
@@ -162,7 +167,8 @@ Case random_case(Gen& g, const std::string& op, std::size_t k = 0) {
   c.label = "random";
   auto q = [&] { return flat(g.unit_quaternion()); };
   auto t01 = [&] { return std::vector<Real>{g.round(Real(g.uniform(0, 1)))}; };
-  if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log") {
+  if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log" ||
+      op == "to_angle" || op == "to_axis" || op == "sqrt") {
     c.inputs = {q()};
   } else if (op == "compose") {
     c.inputs = {q(), q()};
@@ -195,6 +201,8 @@ Case random_case(Gen& g, const std::string& op, std::size_t k = 0) {
     c.inputs = {q(), flat(g.vector(-1, 3))};
   } else if (op == "dq_compose") {
     c.inputs = {flat(g.rigid(3)), flat(g.rigid(3))};
+  } else if (op == "dq_to_rotation_translation") {
+    c.inputs = {flat(g.rigid(3))};
   } else if (op == "dq_apply_point") {
     c.inputs = {flat(g.rigid(3)), flat(g.vector(-1, 3))};
   } else if (op == "dq_normalize") {
@@ -335,7 +343,7 @@ void set_pair(Gen& g, Case& c, const std::string& op, const Quat& a, const Quat&
 void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& op, int n) {
   const Real pi = ref::ScalarTraits<Real>::pi();
   const bool single = op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" ||
-                      op == "log" || op == "apply_vector";
+                      op == "log" || op == "apply_vector" || op == "to_angle" || op == "to_axis" || op == "sqrt";
   auto rotation_case = [&](const Real& angle, const char* what) {
     Case c = random_case(g, op);
     if (single) {
@@ -353,11 +361,19 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
     } else if (op == "compose") {
       c.inputs[0] = flat(rounded_rotation(g, angle));
       c.inputs[1] = flat(rounded_rotation(g, angle));
+    } else if (op == "dq_to_rotation_translation") {
+      // The rigid motion of that rotation and a random translation, DQ-1 exactly, then rounded.
+      const V3 d = g.direction();
+      const Real len = pow(Real(10), Real(g.uniform(-1, 3)));
+      const auto r = ref::clause::DQ_1_from_rotation_translation(Gen::rotation(angle, g.direction()),
+                                                                 V3{d[0] * len, d[1] * len, d[2] * len});
+      c.inputs[0] = flat(ref::DualQuaternion<Real>{g.rounded(r.value.real), g.rounded(r.value.dual)});
     }
     c.label = what;
     return c;
   };
-  const bool rotation_valued = single || op == "exp" || op == "from_axis_angle" || op == "from_matrix" || op == "compose";
+  const bool rotation_valued = single || op == "exp" || op == "from_axis_angle" || op == "from_matrix" || op == "compose" ||
+                               op == "dq_to_rotation_translation";
   if (rotation_valued) {
     // One angle per decade whatever n is (2e-9, 2e-8, ..., 2): no decade is left to chance.
     for (int k = -9; k <= 0; ++k) cases.push_back(rotation_case(Real(2) * pow(Real(10), Real(k)), "angle sweep 1e-9 .. pi"));
@@ -456,7 +472,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       for (Real& x : c.inputs[0]) x = g.round(x + Real(g.uniform(-size, size)));
       return labelled(c, "perturbed rotation");
     });
-  } else if (clause == "AXANG-1") {
+  } else if (clause == "AXANG-1" || clause == "AXANG-3" || clause == "AXANG-4" || clause == "SQRT-1") {
     repeat([&](int) { return random(); });
     // Angles above 2 pi - 1 (w < -cos(1/2)): where GLM 0.9.9.8's angle() returns the wrong branch.
     repeat([&](int) {
@@ -464,6 +480,24 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       c.inputs = {flat(g.rounded(Gen::rotation(Real(g.uniform(2 * M_PI - 1, 2 * M_PI)), g.direction())))};
       c.label = "angle in (2pi - 1, 2pi)";
       return c;
+    });
+    if (clause == "SQRT-1") {
+      // q^ = -1: s = (0, 0, 1, 0), the +z of LOG-2 (another unit pure quaternion: ACC-1 minus_one_axis).
+      for (double s : {1.0, 0.5, 3.0})
+        cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion"});
+      cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components"});
+    }
+  } else if (clause == "DQ-7") {
+    repeat([&](int) { return random(); });
+    // DQ-4 first: a real part off unit (within the ordinary 2^-6) and a dual part with a component
+    // along the real part, which carries no translation and must be removed.
+    repeat([&](int) {
+      Case c = random();
+      const Real s(1.0 + g.uniform(-0.01, 0.01));
+      std::vector<Real>& v = c.inputs[0];
+      for (int i = 0; i < 8; ++i) v[i] = g.round(v[i] * s);
+      for (int i = 4; i < 8; ++i) v[i] = g.round(v[i] + v[i - 4] * Real(g.uniform(-0.5, 0.5)));
+      return labelled(c, "dual part not orthogonal to the real part");
     });
   } else if (clause == "LOG-2") {
     for (double s : {1.0, 0.5, 3.0})
@@ -722,9 +756,9 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
   }
   // LEVEL-1: the operation clauses of Core .. Rigid also see the angle sweep, the rotations near
   // a full turn and, for pairs and blends, the antipodal, near-identical and unequal-scale pairs.
-  static const std::set<std::string> ordinary = {"APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2", "COMPOSE-1",
-                                                 "LOG-1", "EXP-1", "SLERP-1", "SLERP-2", "NLERP-1", "QLB-1",
-                                                 "LOGBLEND-1", "DQ-5", "DQ-6"};
+  static const std::set<std::string> ordinary = {"APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2", "AXANG-3",
+                                                 "AXANG-4", "COMPOSE-1", "LOG-1", "EXP-1", "SQRT-1", "SLERP-1",
+                                                 "SLERP-2", "NLERP-1", "QLB-1", "LOGBLEND-1", "DQ-5", "DQ-6", "DQ-7"};
   if (ordinary.count(clause)) add_ordinary_families(cases, g, op, n);
 }
 

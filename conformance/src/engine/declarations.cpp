@@ -97,6 +97,9 @@ std::optional<Case> identity_substituted(const AbiOp& op, const Case& c) {
       const std::size_t s = static_cast<std::size_t>(arr.stride);
       for (std::size_t j = 0; j + s <= v.size(); j += s) {
         if (block_norm(v, j, 4) != 0) continue;
+        // The whole dual quaternion, not only its real part: a repair that keeps the dual part
+        // (SciPy's from_dual_quat, pytransform3d's check_dual_quaternion) invents a translation
+        // from an input that has no motion, which no caller can tell from a real one.
         for (std::size_t i = 0; i < s; ++i) v[j + i] = Real(i == 3 ? 1 : 0);
         any = true;
       }
@@ -226,6 +229,71 @@ std::vector<AcceptableConvention> build_conventions() {
                                               ref::Format) -> std::optional<Real> {
                    if (identity(want)) return std::nullopt;
                    return axis_angle_error(got, want);
+                 }});
+
+  // AXANG-3: an angle alone is another correct answer where it is the angle of the same rotation
+  // about some unit axis: 2 pi - theta (the angle in [0, pi], about -u), or a signed angle.
+  // Compared by the rotation angle rho(x) = 2 atan2(|sin(x/2)|, |cos(x/2)|) in [0, pi].
+  const auto rotation_angle = [](const Real& x) { return Real(2) * atan2(abs(sin(x / Real(2))), abs(cos(x / Real(2)))); };
+  all.push_back({"angle_range", "to_angle returns the angle in another range ([0, pi], the angle about -u, or signed)",
+                 false, is("to_angle"),
+                 [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 [rotation_angle](const AbiOp&, const Case&, const Values& got, const Values& want,
+                                  ref::Format) -> std::optional<Real> {
+                   if (mpfr::isnan(got[0][0])) return got[0][0];
+                   return abs(rotation_angle(got[0][0]) - rotation_angle(want[0][0]));
+                 }});
+  // AXANG-4: the axis of AXANG-1 alone. Where theta > pi (w < 0) a library whose angles lie in
+  // [0, pi] (Eigen's AngleAxis, nalgebra) returns -u, the axis of the same rotation by 2 pi - theta:
+  // the axis of its angle_range. The identity has every unit axis (identity_axis).
+  const auto pure_real_input = [](const Case& c) {
+    return !c.inputs.empty() && c.inputs[0].size() >= 4 && c.inputs[0][0] == 0 && c.inputs[0][1] == 0 &&
+           c.inputs[0][2] == 0;
+  };
+  const auto axis_defect = [](const std::vector<Real>& u) { return abs(block_norm(u, 0, 3) - Real(1)); };
+  all.push_back({"identity_axis", "to_axis of the identity rotation (angle 0 or 2 pi) returns another unit axis", false,
+                 is("to_axis"),
+                 [pure_real_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return pure_real_input(c); },
+                 [pure_real_input, axis_defect](const AbiOp&, const Case& c, const Values& got, const Values&,
+                                                ref::Format) -> std::optional<Real> {
+                   if (!pure_real_input(c)) return std::nullopt;
+                   return axis_defect(got[0]);
+                 }});
+  const auto obtuse_input = [pure_real_input](const Case& c) {
+    return !pure_real_input(c) && !c.inputs.empty() && c.inputs[0].size() >= 4 && c.inputs[0][3] <= 0;
+  };
+  all.push_back({"angle_range", "to_axis returns -u where theta >= pi: the axis of the same rotation by 2 pi - theta in [0, pi]",
+                 false, is("to_axis"),
+                 [obtuse_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return obtuse_input(c); },
+                 [obtuse_input, axis_defect](const AbiOp&, const Case& c, const Values& got, const Values& want,
+                                             ref::Format) -> std::optional<Real> {
+                   if (!obtuse_input(c)) return std::nullopt;
+                   Real d(0);
+                   for (int i = 0; i < 3; ++i) d += (got[0][i] + want[0][i]) * (got[0][i] + want[0][i]);
+                   return std::max(Real(sqrt(d)), axis_defect(got[0]));
+                 }});
+
+  // SQRT-1: -s is the other square root of q^ and the same rotation (as MAT-2's -q); q^ = -1 has
+  // every unit pure quaternion as a square root (+z is the spec's choice, as LOG-2's).
+  all.push_back({"sign", "sqrt returns -s of the canonical s (w > 0): the other square root, the same rotation", false,
+                 is("sqrt"), [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   return unit_rotation_error(got[0], quat(want[0]));
+                 }});
+  const auto minus_one_input = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
+  all.push_back({"minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", false,
+                 is("sqrt"),
+                 [minus_one_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return minus_one_input(c); },
+                 [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values&,
+                                   ref::Format) -> std::optional<Real> {
+                   if (!minus_one_input(c)) return std::nullopt;
+                   const Quat s = quat(got[0]);
+                   // s'^2 against q^ = -1 with its sign (max_i |(s'^2)_i - (-1)_i|: s' = 1 squares to
+                   // +1, the same rotation as -1 but no square root of it), and s' unit (METRIC-6).
+                   const Quat p = s * s;
+                   const Real e = std::max({Real(abs(p.w + Real(1))), Real(abs(p.x)), Real(abs(p.y)), Real(abs(p.z))});
+                   if (mpfr::isnan(e)) return e;
+                   return std::max(e, clause::METRIC_6_norm_defect(s));
                  }});
 
   // LOG-1/LOG-2: every v with exp(v) = +-q and |v| <= pi is a logarithm of the rotation; the

@@ -109,6 +109,7 @@ std::vector<std::string> flags_for_label(const std::string& label) {
   else if (starts_with(label, "+Inf in ") || starts_with(label, "-Inf in ")) f = {"Infinity"};
   else if (label == "reflection (det < 0)") f = {"Reflection"};
   else if (label == "perturbed rotation") f = {"NonOrthogonalMatrix"};
+  else if (label == "dual part not orthogonal to the real part") f = {"NonUnit"};  // DQ-7: DQ-4 repairs it
   else if (label == "negative weight") f = {"DegenerateWeights", "NegativeWeight"};
   else if (label == "NaN weight") f = {"NaN", "DegenerateWeights"};
   else if (label == "+Inf weight") f = {"Infinity", "DegenerateWeights"};

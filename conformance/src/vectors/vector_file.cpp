@@ -74,7 +74,7 @@ std::string layout(const std::string& op, const engine::Array& a) {
       else if ((op == "exp" && a.name == "v") || ((op == "log" || op == kRoundTripOp) && a.name == "out_v"))
         s = "rotation log [x, y, z] = (angle/2) axis";
       else if (a.name == "axis" || a.name == "u" || a.name == "out_axis") s = "axis [x, y, z]";
-      else if (a.name == "t") s = "translation [x, y, z]";
+      else if (a.name == "t" || a.name == "out_t") s = "translation [x, y, z]";
       else s = "vector / point [x, y, z]";
       break;
     default:

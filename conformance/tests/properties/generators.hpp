@@ -15,6 +15,8 @@
 // axis-aligned vectors, t = 0, short lists).
 #pragma once
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 #include <ostream>
@@ -119,7 +121,8 @@ inline std::vector<Family> families_for(const std::string& clause, const std::st
   // well as under EDGE-6 / EDGE-7: without them a defect that lives only on that set (glm's
   // dualquat(0, t) = 0 with status OK) is found by no property of the clause it is charged to.
   if (clause == "MAT-3") return {F::perturbed_matrix, F::reflection, F::nonfinite};
-  if (clause == "AXANG-1") return {F::random, F::angle_near_2pi, F::negative_real, F::near_identity};
+  if (clause == "AXANG-1" || clause == "AXANG-3" || clause == "AXANG-4" || clause == "SQRT-1")
+    return {F::random, F::angle_near_2pi, F::negative_real, F::near_identity};
   if (clause == "AXANG-2") return {F::random, F::bad_axis, F::nonfinite, F::near_identity};
   if (clause == "DQ-1") return {F::random, F::large_translation, F::zero};
   if (clause == "LOG-2") return {F::negative_real};
@@ -249,8 +252,11 @@ inline Case ordinary(const engine::AbiOp& op, std::size_t k = 0) {
   Case c;
   auto q = [] { return flat(unit_quaternion()); };
   auto vec = [](double lo, double hi) { return flat(scaled(direction(), decades(lo, hi))); };
-  if (n == "normalize" || n == "inverse" || n == "to_matrix" || n == "to_axis_angle" || n == "log") {
+  if (n == "normalize" || n == "inverse" || n == "to_matrix" || n == "to_axis_angle" || n == "log" ||
+      n == "to_angle" || n == "to_axis" || n == "sqrt") {
     c.inputs = {q()};
+  } else if (n == "dq_to_rotation_translation") {
+    c.inputs = {flat(rigid(-1, 3))};
   } else if (n == "compose") {
     c.inputs = {q(), q()};
   } else if (n == "apply_vector" || n == "apply_bivector") {
@@ -303,6 +309,8 @@ inline Case ordinary(const engine::AbiOp& op, std::size_t k = 0) {
       append(ts, vec(-1, 1));
     }
     c.inputs = {qs, ts, weights(c.k), vec(-1, 1)};
+  } else {
+    throw std::logic_error("properties/generators.hpp: no ordinary inputs for op " + n + " (add them)");
   }
   return c;
 }

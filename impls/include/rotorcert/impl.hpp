@@ -15,7 +15,8 @@
 //
 // Inputs are const references and come first, outputs are non-const references; scalars are
 // plain S. make_ops<Impl>() turns whatever subset is defined into the batched C table (a
-// missing function becomes a NULL pointer: NOT_SUPPORTED). An implementation that batches
+// missing function becomes a NULL pointer: NOT_SUPPORTED; make_ops3<Impl>() does the same for the
+// operations of ABI version 3: to_angle, to_axis, sqrt, dq_to_rotation_translation). An implementation that batches
 // itself (SIMD) defines `static int NAME_batch(...)` with the C signature instead, and that is
 // used as is.
 #pragma once
@@ -68,6 +69,10 @@ template <class S> struct OpsFor;
 template <> struct OpsFor<float> { using type = rc_ops_f32; };
 template <> struct OpsFor<double> { using type = rc_ops_f64; };
 template <class S> using Ops = typename OpsFor<S>::type;
+template <class S> struct Ops3For;
+template <> struct Ops3For<float> { using type = rc_ops3_f32; };
+template <> struct Ops3For<double> { using type = rc_ops3_f64; };
+template <class S> using Ops3 = typename Ops3For<S>::type;  // the ABI version 3 operations
 
 namespace detail {
 
@@ -249,6 +254,17 @@ Ops<typename Impl::Scalar> make_ops() {
   ROTORCERT_OP_ELEMENTWISE(ops, Impl, rotate_about_axis)
   ROTORCERT_OP_SKIN(ops, Impl, skin_linear, S)
   ROTORCERT_OP_SKIN(ops, Impl, skin_dual_quaternion, S)
+  return ops;
+}
+
+/// The batched C table of the ABI version 3 operations of an implementation struct.
+template <class Impl>
+Ops3<typename Impl::Scalar> make_ops3() {
+  Ops3<typename Impl::Scalar> ops{};
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_angle)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_axis)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, sqrt)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_to_rotation_translation)
   return ops;
 }
 

@@ -1,4 +1,4 @@
-/* rotorcert implementation ABI, version 2 (version 1 tables still load: see below).
+/* rotorcert implementation ABI, version 3 (version 1 and 2 tables still load: see below).
  *
  * An implementation under test (built in, or a third-party plugin loaded with dlopen) exports
  * one C entry point:
@@ -10,10 +10,14 @@
  * everything they point to live as long as the library is loaded.
  *
  * Versions: a version-2 table is a version-1 table with two fields appended (preconditions and
- * conventions, the declarations of spec clause DECL-1). The suite asks for version 2 first and,
- * when a library answers NULL at index 0, for version 1; it reads the appended fields only from
- * a table whose abi_version is 2. A library built against this header answers both (a version-1
- * host reads the version-1 prefix of the same table).
+ * conventions, the declarations of spec clause DECL-1); a version-3 table is a version-2 table
+ * with two more appended (f32_v3, f64_v3: the operations added in version 3, in a struct of their
+ * own so that rc_ops_f32/f64 keep their version-1 layout). The suite asks for version 3 first,
+ * then 2, then 1, taking the first version at which the library answers a table at index 0; it
+ * reads the appended fields only from a table whose abi_version is at least the version that
+ * added them (a version-1 or version-2 table simply lacks the newer operations: NOT_SUPPORTED).
+ * A library built against this header answers every version from RC_ABI_VERSION_MIN to
+ * RC_ABI_VERSION (an older host reads the prefix of its own version).
  *
  * Every operation is a batch over plain arrays of the table's scalar type (float or double,
  * see rc_impl.scalar), n elements per call, with one status byte per element. A NULL function
@@ -51,7 +55,7 @@
 extern "C" {
 #endif
 
-#define RC_ABI_VERSION 2u
+#define RC_ABI_VERSION 3u
 #define RC_ABI_VERSION_MIN 1u /* the oldest version the suite still loads */
 
 /* Element status (RESULT-2). */
@@ -113,6 +117,22 @@ enum {
 RC_DECLARE_OPS(rc_ops_f32, float);
 RC_DECLARE_OPS(rc_ops_f64, double);
 
+/* The operations added in ABI version 3, same conventions (batch, NULL = NOT_SUPPORTED). Read
+ * only from a table whose abi_version is >= 3. */
+#define RC_DECLARE_OPS3(NAME, S)                                                                             \
+  typedef struct NAME {                                                                                      \
+    /* Core: the two halves of to_axis_angle, for APIs that offer them apart */                             \
+    int (*to_angle)(size_t n, const S* q, S* out_angle, uint8_t* status);              /* AXANG-3 */        \
+    int (*to_axis)(size_t n, const S* q, S* out_axis, uint8_t* status);                /* AXANG-4 */        \
+    /* Interp: the rotor square root, half the rotation (C with <tgmath.h>: call (ops->sqrt)(...)) */      \
+    int (*sqrt)(size_t n, const S* q, S* out_q, uint8_t* status);                      /* SQRT-1 */         \
+    /* Rigid: the inverse of dq_from_rotation_translation */                                                \
+    int (*dq_to_rotation_translation)(size_t n, const S* d, S* out_q, S* out_t, uint8_t* status); /* DQ-7 */ \
+  } NAME
+
+RC_DECLARE_OPS3(rc_ops3_f32, float);
+RC_DECLARE_OPS3(rc_ops3_f64, double);
+
 /* One implementation for one scalar type. */
 typedef struct rc_impl {
   uint32_t abi_version;       /* RC_ABI_VERSION the table was built against */
@@ -142,6 +162,11 @@ typedef struct rc_impl {
    * Ids: spec/SPEC.md section 4a (DECL-1, ACC-1). */
   const char* const* preconditions;
   const char* const* conventions;
+  /* ---- ABI version 3 ---- */
+  /* The version-3 operations of the same scalar type: at most the one of rc_impl.scalar is set
+   * (f32_v3 for RC_SCALAR_FLOAT32, f64_v3 for RC_SCALAR_FLOAT64); NULL means none of them. */
+  const rc_ops3_f32* f32_v3;
+  const rc_ops3_f64* f64_v3;
 } rc_impl;
 
 /* The entry point every implementation library exports. */

@@ -8,6 +8,8 @@
 // and optionally the SIMD dispatch hooks simd_targets / select_target / current_target, and the
 // declarations of ABI version 2 (DECL-1), each a NULL-terminated array of "op:id" strings:
 //   static constexpr const char* const preconditions[], conventions[];
+// The operations of ABI version 3 (to_angle, to_axis, sqrt, dq_to_rotation_translation) are element
+// functions like the others; table() puts them in f32_v3 / f64_v3.
 #pragma once
 
 #include <cstdint>
@@ -17,9 +19,10 @@
 namespace rotorcert::impl {
 
 template <class Impl>
-const rc_impl* table() {
+const rc_impl* table(std::uint32_t abi_version = RC_ABI_VERSION) {
   using S = typename Impl::Scalar;
   static const Ops<S> ops = make_ops<Impl>();
+  static const Ops3<S> ops3 = make_ops3<Impl>();
   static const rc_impl t = [] {
     rc_impl r{};
     r.abi_version = RC_ABI_VERSION;
@@ -31,9 +34,11 @@ const rc_impl* table() {
     if constexpr (std::is_same_v<S, float>) {
       r.scalar = RC_SCALAR_FLOAT32;
       r.f32 = &ops;
+      r.f32_v3 = &ops3;
     } else {
       r.scalar = RC_SCALAR_FLOAT64;
       r.f64 = &ops;
+      r.f64_v3 = &ops3;
     }
     if constexpr (requires { Impl::simd_targets; }) {
       r.simd_targets = Impl::simd_targets;
@@ -44,15 +49,28 @@ const rc_impl* table() {
     if constexpr (requires { Impl::conventions; }) r.conventions = Impl::conventions;
     return r;
   }();
-  return &t;
+  // An older host gets the same table stamped with the version it asked for: it reads the prefix
+  // of that version (the appended fields are there, unread), and a host that checks the stamp
+  // against its own RC_ABI_VERSION accepts it.
+  static const rc_impl v2 = [] {
+    rc_impl r = t;
+    r.abi_version = 2;
+    return r;
+  }();
+  static const rc_impl v1 = [] {
+    rc_impl r = t;
+    r.abi_version = 1;
+    return r;
+  }();
+  return abi_version >= 3 ? &t : abi_version == 2 ? &v2 : &v1;
 }
 
-/// The body of an entry point: the index-th of the given implementation structs. A version-2
-/// table is a version-1 table with fields appended, so it answers every version it contains.
+/// The body of an entry point: the index-th of the given implementation structs. A newer table is
+/// an older one with fields appended, so it answers every version it contains.
 template <class... Impls>
 const rc_impl* entry(std::uint32_t abi_version, std::uint32_t index) {
   if (abi_version < RC_ABI_VERSION_MIN || abi_version > RC_ABI_VERSION) return nullptr;
-  const rc_impl* tables[] = {table<Impls>()...};
+  const rc_impl* tables[] = {table<Impls>(abi_version)...};
   return index < sizeof...(Impls) ? tables[index] : nullptr;
 }
 

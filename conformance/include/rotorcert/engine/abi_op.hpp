@@ -63,7 +63,8 @@ struct AbiOp {
   std::function<Real(const Values& inputs, std::size_t k)> scale;
 };
 
-/// Every op of ABI v1, in the order of rc_ops.
+/// Every op of the ABI: those of rc_ops (v1) in their order, then those of rc_ops3 (v3: to_angle,
+/// to_axis, sqrt, dq_to_rotation_translation), which a table of abi_version < 3 never supports.
 const std::vector<AbiOp>& abi_ops();
 /// The op of that name, or nullptr.
 const AbiOp* find_abi_op(const std::string& name);

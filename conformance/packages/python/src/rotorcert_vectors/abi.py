@@ -14,6 +14,9 @@ OUTPUTS = {
     "dq_apply_point": (("out_p", 3),), "dq_normalize": (("out_d", 8),), "dq_sclerp": (("out_d", 8),),
     "dq_blend": (("out_d", 8),), "rotate_about_axis": (("out_p", 3),),
     "skin_linear": (("out_v", 3),), "skin_dual_quaternion": (("out_v", 3),),
+    # ABI version 3
+    "to_angle": (("out_angle", 1),), "to_axis": (("out_axis", 3),), "sqrt": (("out_q", 4),),
+    "dq_to_rotation_translation": (("out_q", 4), ("out_t", 3)),
     "log_exp_round_trip": (("out_q", 4),),
 }
 
