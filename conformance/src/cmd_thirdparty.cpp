@@ -20,6 +20,7 @@
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/certify/verdict.hpp>
 #include <rotorcert/engine/abi_op.hpp>
+#include <rotorcert/report/speed.hpp>
 #include <rotorcert/spec/data_layout.hpp>
 #include <rotorcert/thirdparty/thirdparty.hpp>
 
@@ -86,15 +87,6 @@ int run_third_party(const ThirdPartyRequest& r, const spec::Spec& spec, const ce
 
 namespace {
 
-/// The bench name's fields: op/<op>/<table>/<scalar>/<n>.
-std::vector<std::string> name_fields(const std::string& name) {
-  std::vector<std::string> f;
-  std::size_t from = 0;
-  for (std::size_t at; (at = name.find('/', from)) != std::string::npos; from = at + 1) f.push_back(name.substr(from, at - from));
-  f.push_back(name.substr(from));
-  return f;
-}
-
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t m = v.size() / 2;
@@ -137,9 +129,10 @@ void add_third_party_speed(const ThirdPartyRequest& r, const thirdparty::Outcome
   // ns per element of one batch call, by (table, scalar, op).
   std::map<std::tuple<std::string, std::string, std::string>, double> ns;
   for (const nlohmann::json& b : out.value("benchmarks", nlohmann::json::array())) {
-    const auto f = name_fields(b.value("name", ""));
-    if (f.size() != 5 || f[0] != "op" || !b.contains("ns_per_element") || !b["ns_per_element"].is_number()) continue;
-    ns[{f[2], f[3], f[1]}] = b["ns_per_element"].get<double>();
+    auto f = report::bench_label_fields(b);
+    if (b.value("name", "").rfind("op/", 0) != 0 || !b.contains("ns_per_element") || !b["ns_per_element"].is_number())
+      continue;
+    ns[{f["impl"], f["scalar"], f["op"]}] = b["ns_per_element"].get<double>();
   }
   const std::string cpu = out.contains("context") ? out["context"].value("cpu_model", "") : "";
   section["speed"] = {{"baseline", kBaseline}, {"elements", kElements}, {"cpu", cpu},

@@ -48,19 +48,11 @@ std::vector<const Case*> pointers(const std::vector<Case>& cases) {
   return p;
 }
 
-std::string join_values(const std::vector<Real>& v, bool hex, ref::Format f);
-
 std::string outputs_text(const AbiOp& op, const RawCall& r, std::size_t i, ref::Format f) {
   std::string s = "status " + std::to_string(r.status.at(i));
   for (std::size_t a = 0; a < op.outputs.size(); ++a)
     s += " " + op.outputs[a].name + "=" + join_values(r.output(op, a, i), true, f);
   return s;
-}
-
-std::string join_values(const std::vector<Real>& v, bool, ref::Format f) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + hexfloat(v[i], f);
-  return s + "]";
 }
 
 CaseVerdict passed(std::string detail) { return {ref::Verdict::pass, 0, std::move(detail)}; }

@@ -65,11 +65,15 @@ std::string hex(const Real& x, ref::Format f) {
 
 std::string dec(const Real& x) { return x.toString("%.12Rg"); }
 
+}  // namespace
+
 std::string join_values(const std::vector<Real>& v, bool hexfloat, ref::Format f) {
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + (hexfloat ? hex(v[i], f) : dec(v[i]));
   return s + "]";
 }
+
+namespace {
 
 Quat quat(const std::vector<Real>& a) { return {a[3], a[0], a[1], a[2]}; }
 ref::DualQuaternion<Real> dq(const std::vector<Real>& a) { return {{a[3], a[0], a[1], a[2]}, {a[7], a[4], a[5], a[6]}}; }
@@ -230,6 +234,22 @@ void set_call_environment(const std::fenv_t& env) {
   call_environment_set = true;
 }
 
+namespace {
+/// The table's batch call on filled buffers, in the call environment when one is set (the
+/// judge's own environment restored after it): what observe and call_raw both run.
+template <class S>
+int call_in_environment(const rc_impl& table, const AbiOp& op, std::size_t n, std::size_t k, Buffers<S>& buf) {
+  std::fenv_t judge_environment;
+  if (call_environment_set) {
+    std::fegetenv(&judge_environment);
+    std::fesetenv(&call_environment);
+  }
+  const int rc = call(table, op.name, n, k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
+  if (call_environment_set) std::fesetenv(&judge_environment);
+  return rc;
+}
+}  // namespace
+
 std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::vector<const Case*>& cases,
                               std::size_t k) {
   std::vector<Observed> result(cases.size());
@@ -237,13 +257,7 @@ std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::
     using S = decltype(tag);
     Buffers<S> buf;
     buf.fill(op, cases, k);
-    std::fenv_t judge_environment;
-    if (call_environment_set) {
-      std::fegetenv(&judge_environment);
-      std::fesetenv(&call_environment);
-    }
-    const int rc = call(table, op.name, cases.size(), k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
-    if (call_environment_set) std::fesetenv(&judge_environment);
+    const int rc = call_in_environment(table, op, cases.size(), k, buf);
     for (std::size_t i = 0; i < cases.size(); ++i) {
       result[i].call_rc = rc;
       result[i].status = buf.status[i];
@@ -267,13 +281,7 @@ RawCall call_raw(const rc_impl& table, const AbiOp& op, const std::vector<const 
     buf.fill(op, cases, k);
     r.scalar_size = sizeof(S);
     for (const auto& v : buf.in) r.in_before.push_back(bytes(v));
-    std::fenv_t judge_environment;
-    if (call_environment_set) {
-      std::fegetenv(&judge_environment);
-      std::fesetenv(&call_environment);
-    }
-    r.call_rc = call(table, op.name, cases.size(), k, buf.in_ptrs, buf.out_ptrs, buf.status.data());
-    if (call_environment_set) std::fesetenv(&judge_environment);
+    r.call_rc = call_in_environment(table, op, cases.size(), k, buf);
     for (const auto& v : buf.in) r.in_after.push_back(bytes(v));
     for (const auto& v : buf.out) r.out.push_back(bytes(v));
     r.status.assign(buf.status.begin(), buf.status.begin() + long(cases.size()));

@@ -10,12 +10,7 @@
 
 namespace rotorcert::report {
 
-namespace {
-
-using json = nlohmann::json;
-
-/// The label "impl=glm_quat scalar=float op=slerp n=4096 k=1 target=none" as key/value pairs.
-std::map<std::string, std::string> label_fields(const json& b) {
+std::map<std::string, std::string> bench_label_fields(const nlohmann::json& b) {
   std::map<std::string, std::string> out;
   std::istringstream in(b.value("label", std::string()));
   std::string word;
@@ -25,6 +20,11 @@ std::map<std::string, std::string> label_fields(const json& b) {
   }
   return out;
 }
+
+namespace {
+
+using json = nlohmann::json;
+
 
 std::optional<double> number(const json& b, const char* key) {
   if (!b.contains(key) || !b[key].is_number()) return std::nullopt;
@@ -101,7 +101,7 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
   std::map<std::string, double> baseline_ns;  // "glm_slerp/float/4096" -> ns
   for (const auto& [name, b] : runs) {
     if (name.rfind("baseline/", 0) != 0) continue;
-    auto f = label_fields(b);
+    auto f = bench_label_fields(b);
     const auto ns = number(b, "ns_per_element");
     const std::string base = name.substr(9, name.find('/', 9) - 9);
     if (!ns) continue;
@@ -114,7 +114,7 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
   json ops = json::array();
   for (const auto& [name, b] : runs) {
     if (name.rfind("op/", 0) != 0) continue;
-    auto f = label_fields(b);
+    auto f = bench_label_fields(b);
     const auto ns = number(b, "ns_per_element");
     const auto ips = number(b, "items_per_second");
     if (!ns || !ips) continue;
@@ -171,7 +171,7 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
   std::map<std::string, double> pose_us;
   for (const auto& [name, b] : runs)
     if (name.rfind("frame_pose/", 0) == 0) {
-      auto f = label_fields(b);
+      auto f = bench_label_fields(b);
       if (const auto us = number(b, "us_per_frame"))
         pose_us[f["scene"] + "|" + f["impl"] + "|" + f["scalar"] + "|" + f["technique"]] = *us;
     }
@@ -179,7 +179,7 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
   std::map<std::pair<std::string, std::string>, std::map<std::string, std::pair<std::string, double>>> by_scene;
   for (const auto& [name, b] : runs) {
     if (name.rfind("frame/", 0) != 0) continue;
-    auto f = label_fields(b);
+    auto f = bench_label_fields(b);
     const auto us = number(b, "us_per_frame");
     if (!us) continue;
     const std::string method = method_name(f["impl"], f["technique"]);

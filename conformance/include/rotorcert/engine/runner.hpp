@@ -139,6 +139,8 @@ ref::Format format_of(const rc_impl& table);
 
 /// Element values as text: hexfloat of the format ("0x1.8p+0") and decimal (12 digits).
 std::string hexfloat(const Real& x, ref::Format f);
+/// "[v0, v1, ...]" in hexfloat of the format, or in decimal (12 digits).
+std::string join_values(const std::vector<Real>& v, bool hexfloat, ref::Format f);
 std::string describe_inputs(const AbiOp& op, const Case& c, ref::Format f);
 
 /// The floating-point environment implementation calls run in (NUM-1: an implementation is tested

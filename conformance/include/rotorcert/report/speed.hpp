@@ -24,12 +24,17 @@
 // from cache (the memory roof does not bound them); roofline_fraction = items_per_second / bound.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace rotorcert::report {
+
+/// The label rotorcert_bench gives an op benchmark ("impl=glm_quat scalar=float op=slerp n=4096
+/// k=1 target=none") as key/value pairs: how a benchmark is read, never from its name.
+std::map<std::string, std::string> bench_label_fields(const nlohmann::json& benchmark);
 
 /// The speed targets of issue 7: ratios at 4096 float elements against a GLM baseline of the same run.
 struct SpeedTarget {
