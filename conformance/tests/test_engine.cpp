@@ -165,6 +165,28 @@ TEST(Engine, ZeroAnsweredWithTheIdentityIsAcceptable) {
   EXPECT_FALSE(r.acceptable[0].declared);
 }
 
+namespace {
+/// normalize with no status channel (always OK): the zero quaternion answered with NaN in every
+/// component (Whole), or in one only (partly NaN).
+template <bool Whole>
+struct NanForZero : Normalizer<0> {
+  static ri::Status normalize(const Q& q, Q& out) {
+    if (!normalize_exact(q, out)) out = Whole ? Q{NAN, NAN, NAN, NAN} : Q{NAN, 0, 0, NAN};
+    return ri::Status::ok;
+  }
+};
+}  // namespace
+
+TEST(Engine, AnErrorSignalledInBandIsADomainError) {
+  RC_CLAUSE("RESULT-2");
+  RC_CLAUSE("EDGE-6");
+  // Every output non-finite with status OK: the domain error in band (GLM's inverse(0) = 0/0).
+  const auto whole = run(ri::table<NanForZero<true>>(), "EDGE-6");
+  EXPECT_EQ(whole.outcome, engine::Outcome::pass) << whole.worst_detail << " " << whole.worst_input;
+  // A number beside the NaN is no error signal.
+  EXPECT_EQ(run(ri::table<NanForZero<false>>(), "EDGE-6").outcome, engine::Outcome::fail);
+}
+
 TEST(Engine, ZeroAnsweredWithAnotherRotationFails) {
   RC_CLAUSE("EDGE-6");
   RC_CLAUSE("ACC-1");
