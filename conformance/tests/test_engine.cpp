@@ -643,6 +643,174 @@ TEST(Engine, RotationAndTranslationOfADualQuaternionNeedTheNormalisation) {
   EXPECT_EQ(run(ri::table<V3Ops<V3Impl::right>>(), "EDGE-6").outcome, engine::Outcome::pass);
 }
 
+namespace {
+
+using X = std::array<double, 6>;
+
+/// Careful and careless forms of the operations of ABI version 4, each a table of its own.
+enum class V4Impl { right, shorter_arc, cut_axis_z, no_perp_scale, no_sinc, compose_a_first, inverse_minus_t };
+
+template <V4Impl K>
+struct V4Ops : Normalizer<0> {
+  static bool finite(const auto& a) {
+    for (double x : a)
+      if (!std::isfinite(x)) return false;
+    return true;
+  }
+  static double dot3(const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  static V rotate(const Q& q, const V& v) {  // q v q* for a unit q: v + w t + u x t, t = 2 u x v
+    const V t{2 * (q[1] * v[2] - q[2] * v[1]), 2 * (q[2] * v[0] - q[0] * v[2]), 2 * (q[0] * v[1] - q[1] * v[0])};
+    return {v[0] + q[3] * t[0] + q[1] * t[2] - q[2] * t[1], v[1] + q[3] * t[1] + q[2] * t[0] - q[0] * t[2],
+            v[2] + q[3] * t[2] + q[0] * t[1] - q[1] * t[0]};
+  }
+  static Q product(const Q& a, const Q& b) {
+    return {a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1], a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0],
+            a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3], a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2]};
+  }
+  static bool unit(const Q& q, Q& u) { return finite(q) && normalize_exact(q, u); }
+
+  static ri::Status dq_log(const D& d_in, X& out) {
+    if (!finite(d_in)) return ri::Status::domain_error;
+    D d = d_in;
+    if (K == V4Impl::shorter_arc && d[3] < 0)
+      for (double& x : d) x = -x;  // the log of -sigma: the same rigid motion
+    Q r;
+    if (!unit(Q{d[0], d[1], d[2], d[3]}, r)) return ri::Status::domain_error;
+    const double n = std::hypot(std::hypot(d[0], d[1]), std::hypot(d[2], d[3]));
+    Q e{d[4] / n, d[5] / n, d[6] / n, d[7] / n};
+    const double along_r = r[0] * e[0] + r[1] * e[1] + r[2] * e[2] + r[3] * e[3];
+    for (int i = 0; i < 4; ++i) e[i] -= along_r * r[i];  // DQ-4
+    const V rv{r[0], r[1], r[2]}, dv{e[0], e[1], e[2]};
+    const double s = std::hypot(rv[0], rv[1], rv[2]);
+    if (s == 0 && r[3] > 0) {
+      out = {0, 0, 0, dv[0], dv[1], dv[2]};
+      return ri::Status::ok;
+    }
+    if (s == 0) {  // r = -1: t = -2 d_v
+      const V t{-2 * dv[0], -2 * dv[1], -2 * dv[2]};
+      const double len = std::hypot(t[0], t[1], t[2]);
+      if (len == 0 || K == V4Impl::cut_axis_z) out = {0, 0, M_PI, t[0] / 2, t[1] / 2, t[2] / 2};
+      else out = {M_PI / len * t[0], M_PI / len * t[1], M_PI / len * t[2], t[0] / 2, t[1] / 2, t[2] / 2};
+      return ri::Status::ok;
+    }
+    const double b = std::atan2(s, r[3]);
+    const V nn{rv[0] / s, rv[1] / s, rv[2] / s};
+    const double along = dot3(dv, nn), a = along * r[3] - e[3] * s;
+    const double k = K == V4Impl::no_perp_scale ? 1.0 : b / s;
+    for (int i = 0; i < 3; ++i) {
+      out[std::size_t(i)] = b * nn[std::size_t(i)];
+      out[std::size_t(i) + 3] = a * nn[std::size_t(i)] + k * (dv[std::size_t(i)] - along * nn[std::size_t(i)]);
+    }
+    return ri::Status::ok;
+  }
+  static ri::Status dq_exp(const X& xi, D& out) {
+    if (!finite(xi)) return ri::Status::domain_error;
+    const double b = std::hypot(xi[0], xi[1], xi[2]);
+    if (b == 0) {
+      out = {0, 0, 0, 1, xi[3], xi[4], xi[5], 0};
+      return ri::Status::ok;
+    }
+    const V n{xi[0] / b, xi[1] / b, xi[2] / b}, xd{xi[3], xi[4], xi[5]};
+    const double a = dot3(xd, n), c = std::cos(b), sn = std::sin(b);
+    const double sinc = K == V4Impl::no_sinc ? 1.0 : sn / b;
+    out = {sn * n[0], sn * n[1], sn * n[2], c, 0, 0, 0, -a * sn};
+    for (int i = 0; i < 3; ++i)
+      out[std::size_t(i) + 4] = a * c * n[std::size_t(i)] + sinc * (xd[std::size_t(i)] - a * n[std::size_t(i)]);
+    return ri::Status::ok;
+  }
+  static ri::Status rigid_compose(const Q& qa, const V& ta, const Q& qb, const V& tb, Q& q, V& t) {
+    Q ua, ub;
+    if (!unit(qa, ua) || !unit(qb, ub) || !finite(ta) || !finite(tb)) return ri::Status::domain_error;
+    q = product(ua, ub);
+    const V moved = K == V4Impl::compose_a_first ? rotate(ub, ta) : rotate(ua, tb);
+    const V plus = K == V4Impl::compose_a_first ? tb : ta;
+    t = {moved[0] + plus[0], moved[1] + plus[1], moved[2] + plus[2]};
+    return ri::Status::ok;
+  }
+  static ri::Status rigid_apply(const Q& q, const V& t, const V& p, V& out) {
+    Q u;
+    if (!unit(q, u) || !finite(t) || !finite(p)) return ri::Status::domain_error;
+    const V r = rotate(u, p);
+    out = {r[0] + t[0], r[1] + t[1], r[2] + t[2]};
+    return ri::Status::ok;
+  }
+  static ri::Status rigid_inverse(const Q& q_in, const V& t_in, Q& q, V& t) {
+    Q u;
+    if (!unit(q_in, u) || !finite(t_in)) return ri::Status::domain_error;
+    q = {-u[0], -u[1], -u[2], u[3]};
+    const V back = K == V4Impl::inverse_minus_t ? t_in : rotate(q, t_in);
+    t = {-back[0], -back[1], -back[2]};
+    return ri::Status::ok;
+  }
+};
+
+}  // namespace
+
+TEST(Engine, DualQuaternionLogPassesAndItsBranchesAreJudged) {
+  RC_CLAUSE("DQ-8");
+  RC_CLAUSE("ACC-1");
+  const auto right = run(ri::table<V4Ops<V4Impl::right>>(), "DQ-8");
+  EXPECT_EQ(right.outcome, engine::Outcome::pass) << right.worst_detail;
+  EXPECT_TRUE(right.acceptable.empty());
+  // The log of -sigma where r_w < 0: the same rigid motion, ACCEPTABLE (shorter_arc).
+  const auto shorter = run(ri::table<V4Ops<V4Impl::shorter_arc>>(), "DQ-8");
+  EXPECT_EQ(shorter.outcome, engine::Outcome::pass) << shorter.worst_detail;
+  EXPECT_TRUE(accepted_as(shorter, "shorter_arc"));
+  // At r = -1 the axis must follow the translation: +z with t/2 is no log of sigma.
+  const auto cut = run(ri::table<V4Ops<V4Impl::cut_axis_z>>(), "DQ-8");
+  EXPECT_EQ(cut.outcome, engine::Outcome::fail);
+  EXPECT_NE(cut.worst_label.find("-1"), std::string::npos) << cut.worst_label;
+  // Without b / sin b on d_perp the screw's moment is wrong away from b = 0.
+  EXPECT_EQ(run(ri::table<V4Ops<V4Impl::no_perp_scale>>(), "DQ-8").outcome, engine::Outcome::fail);
+  EXPECT_EQ(run(ri::table<V4Ops<V4Impl::right>>(), "EDGE-6").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, DualVectorExpPassesAndADroppedSincFails) {
+  RC_CLAUSE("DQ-9");
+  const auto right = run(ri::table<V4Ops<V4Impl::right>>(), "DQ-9");
+  EXPECT_EQ(right.outcome, engine::Outcome::pass) << right.worst_detail;
+  EXPECT_EQ(run(ri::table<V4Ops<V4Impl::no_sinc>>(), "DQ-9").outcome, engine::Outcome::fail);
+  EXPECT_EQ(run(ri::table<V4Ops<V4Impl::right>>(), "EDGE-1").outcome, engine::Outcome::pass);
+}
+
+TEST(Engine, RotationTranslationTransformsComposeApplyAndInvert) {
+  RC_CLAUSE("RIGID-1");
+  RC_CLAUSE("RIGID-2");
+  RC_CLAUSE("RIGID-3");
+  for (const char* clause : {"RIGID-1", "RIGID-2", "RIGID-3"}) {
+    const auto r = run(ri::table<V4Ops<V4Impl::right>>(), clause);
+    EXPECT_EQ(r.outcome, engine::Outcome::pass) << clause << ": " << r.worst_detail;
+  }
+  const auto order = run(ri::table<V4Ops<V4Impl::compose_a_first>>(), "RIGID-1");
+  EXPECT_EQ(order.outcome, engine::Outcome::fail);
+  EXPECT_EQ(order.worst_op, "rigid_compose");
+  EXPECT_EQ(run(ri::table<V4Ops<V4Impl::inverse_minus_t>>(), "RIGID-3").outcome, engine::Outcome::fail);
+  for (const char* clause : {"EDGE-5", "EDGE-6", "EDGE-7"})
+    EXPECT_EQ(run(ri::table<V4Ops<V4Impl::right>>(), clause).outcome, engine::Outcome::pass) << clause;
+}
+
+TEST(Engine, AVersion3TableLoadsWithoutTheVersion4Ops) {
+  RC_CLAUSE("RESULT-1");
+  const rc_impl* v4 = ri::table<V4Ops<V4Impl::right>>();
+  ASSERT_EQ(v4->abi_version, RC_ABI_VERSION);
+  const char* const ops[] = {"dq_log", "dq_exp", "rigid_compose", "rigid_apply", "rigid_inverse"};
+  for (const char* op : ops) EXPECT_TRUE(engine::supports(*v4, op)) << op;
+  // A table built against ABI version 3 ends before f32_v4 / f64_v4.
+  rc_impl v3 = *v4;
+  v3.abi_version = 3;
+  EXPECT_EQ(impl::validate_table(v3), "");
+  for (const char* op : ops) EXPECT_FALSE(engine::supports(v3, op)) << op;
+  for (const char* clause : {"DQ-8", "DQ-9", "RIGID-1", "RIGID-2", "RIGID-3"}) {
+    const auto r = run(&v3, clause);
+    EXPECT_EQ(r.outcome, engine::Outcome::not_supported) << clause;
+    EXPECT_EQ(r.cases, 0u) << clause;
+  }
+  const rc_impl* asked3 = ri::entry<V4Ops<V4Impl::right>>(3, 0);
+  ASSERT_NE(asked3, nullptr);
+  EXPECT_EQ(asked3->abi_version, 3u);
+  EXPECT_FALSE(engine::supports(*asked3, "dq_log"));
+}
+
 TEST(Engine, AVersion2TableLoadsWithoutTheVersion3Ops) {
   RC_CLAUSE("RESULT-1");
   const rc_impl* v3 = ri::table<V3Ops<V3Impl::right>>();

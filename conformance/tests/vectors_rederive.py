@@ -434,6 +434,68 @@ def op_dq_to_rotation_translation(f, m, k):  # DQ-7: q = r/|r|, t = 2 d' r'* of 
     return {"out_q": flat_q(u[0]), "out_t": translation(u)}
 
 
+def op_dq_log(f, m, k):
+    """DQ-8: (r, d) = DQ-4(sigma), r = (cos b, sin b n), b = atan2(|r_v|, r_w) in [0, pi];
+    xi_r = b n, xi_d = a n + (b / sin b) d_perp, a = (d_v . n) cos b - d_w sin b. r = 1: (0, d_v);
+    r = -1: (pi t/|t|, t/2), t = the translation (DQ-1), (0, 0, pi, 0, 0, 0) for t = 0."""
+    r, d = dnormalize(dual_input(m["d"]))
+    rv, dv = vec(r), vec(d)
+    s = vnorm(rv)
+    if s == 0 and r[0] > 0:
+        return {"out_xi": [mpf(0)] * 3 + dv}
+    if s == 0:
+        t = translation((r, d))
+        n = vnorm(t)
+        if n == 0:
+            return {"out_xi": [mpf(0), mpf(0), mp.pi] + [mpf(0)] * 3}
+        return {"out_xi": [mp.pi * c / n for c in t] + [c / 2 for c in t]}
+    b = mpmath.atan2(s, r[0])
+    n = [c / s for c in rv]
+    along = sum(x * y for x, y in zip(dv, n))
+    a = along * mpmath.cos(b) - d[0] * mpmath.sin(b)
+    perp = [x - along * y for x, y in zip(dv, n)]
+    return {"out_xi": [b * c for c in n] + [a * y + b / mpmath.sin(b) * x for x, y in zip(perp, n)]}
+
+
+def op_dq_exp(f, m, k):
+    """DQ-9: (cos b, sin b n) + eps (-a sin b, a cos b n + (sin b / b) xi_perp); b = 0: (1, (0, xi_d))."""
+    xi = m["xi"]
+    need(finite(xi))
+    xr, xd = xi[:3], xi[3:]
+    b = vnorm(xr)
+    if b == 0:
+        return {"out_d": flat_d(((mpf(1), mpf(0), mpf(0), mpf(0)), pure(xd)))}
+    n = [c / b for c in xr]
+    a = sum(x * y for x, y in zip(xd, n))
+    c, sn = mpmath.cos(b), mpmath.sin(b)
+    perp = [x - a * y for x, y in zip(xd, n)]
+    dv = [a * c * y + sn / b * x for x, y in zip(perp, n)]
+    return {"out_d": flat_d(((c, sn * n[0], sn * n[1], sn * n[2]), (-a * sn, dv[0], dv[1], dv[2])))}
+
+
+def op_rigid_compose(f, m, k):
+    """RIGID-1: (q^_a q^_b, R_a t_b + t_a)."""
+    qa, qb = rotation_input(f, m, "qa"), rotation_input(f, m, "qb")
+    need(finite(m["ta"]) and finite(m["tb"]))
+    moved = rotate(qa, m["tb"])
+    return {"out_q": flat_q(qmul(qunit(qa), qunit(qb))), "out_t": [x + y for x, y in zip(moved, m["ta"])]}
+
+
+def op_rigid_apply(f, m, k):
+    """RIGID-2: R p + t."""
+    q = rotation_input(f, m, "q")
+    need(finite(m["t"]) and finite(m["p"]))
+    return {"out_p": [x + y for x, y in zip(rotate(q, m["p"]), m["t"])]}
+
+
+def op_rigid_inverse(f, m, k):
+    """RIGID-3: (q^*, -R^-1 t)."""
+    q = rotation_input(f, m, "q")
+    need(finite(m["t"]))
+    inv = qconj(qunit(q))
+    return {"out_q": flat_q(inv), "out_t": [-x for x in rotate(inv, m["t"])]}
+
+
 def op_dq_compose(f, m, k):  # DQ-2: the product of the inputs as given, no normalisation
     return {"out_d": flat_d(dmul(dual_input(m["a"]), dual_input(m["b"])))}
 
@@ -557,6 +619,12 @@ OPS = {
     "to_axis": op_to_axis,
     "sqrt": op_sqrt,
     "dq_to_rotation_translation": op_dq_to_rotation_translation,
+    # ABI version 4
+    "dq_log": op_dq_log,
+    "dq_exp": op_dq_exp,
+    "rigid_compose": op_rigid_compose,
+    "rigid_apply": op_rigid_apply,
+    "rigid_inverse": op_rigid_inverse,
 }
 
 # ---- comparison with the export ----------------------------------------------------------------------

@@ -190,6 +190,57 @@ template <class S> Dual<S> screw_power(const Dual<S>& u, S t) {
   return {{rv.x, rv.y, rv.z, cs}, {dual_v.x, dual_v.y, dual_v.z, -t * hd * sn}};
 }
 
+/// |v| without overflow or underflow of the squares: scaled by the largest |component| (exact
+/// power of two), so a subnormal vector part keeps its direction.
+template <class S> S length(const Vec<S>& v) {
+  using std::abs;
+  const S m = std::max({abs(v.x), abs(v.y), abs(v.z)});
+  if (m == 0) return 0;
+  const int e = std::ilogb(m);
+  const Vec<S> u{std::scalbn(v.x, -e), std::scalbn(v.y, -e), std::scalbn(v.z, -e)};
+  return std::scalbn(std::sqrt(dot(u, u)), e);
+}
+
+/// A dual vector xi = xi_r + eps xi_d (DQ-8, DQ-9): the ABI's 6 scalars.
+template <class S> struct DualVec { Vec<S> r, d; };
+
+/// DQ-8 on validated input: with (r, d) = DQ-4(sigma), r = (cos b, sin b n), b = atan2(|r_v|, r_w)
+/// (no hemisphere flip): xi_r = b n, xi_d = a n + (b / sin b) d_perp with a = (d_v.n) cos b - d_w
+/// sin b. sin b = |r_v| > 0 here, so b / sin b is never 0/0 (-> 1 as b -> 0). r = +1: (0, d_v);
+/// r = -1: the branch cut, (pi t/|t|, t/2) with t the translation, +z for t = 0.
+template <class S> DualVec<S> log(const Dual<S>& sigma) {
+  const Dual<S> u = normalized(sigma);
+  const Vec<S> rv = vec(u.r), dv = vec(u.d);
+  const S s = length(rv);
+  if (s == 0 && u.r.w > 0) return {{0, 0, 0}, dv};
+  if (s == 0) {
+    const Vec<S> t = translation(u);
+    const S len = length(t);
+    const S pi = S(3.14159265358979323846264338327950288);
+    if (len == 0) return {{0, 0, pi}, {0, 0, 0}};
+    return {(pi / len) * t, S(0.5) * t};
+  }
+  const S b = std::atan2(s, u.r.w);
+  const Vec<S> n = (S(1) / s) * rv;
+  const S along = dot(dv, n);
+  const S a = along * u.r.w - u.d.w * s;
+  const Vec<S> perp = dv - along * n;
+  return {b * n, a * n + (b / s) * perp};
+}
+
+/// DQ-9: b = |xi_r|, n = xi_r / b, a = xi_d.n, xi_perp = xi_d - a n;
+/// exp = (sin b n, cos b) + eps (a cos b n + (sin b / b) xi_perp, -a sin b); b = 0: (1, (xi_d, 0)).
+template <class S> Dual<S> exp(const DualVec<S>& xi) {
+  const S b = length(xi.r);
+  if (b == 0) return {{0, 0, 0, 1}, {xi.d.x, xi.d.y, xi.d.z, 0}};
+  const Vec<S> n = (S(1) / b) * xi.r;
+  const S a = dot(xi.d, n);
+  const Vec<S> perp = xi.d - a * n;
+  const S c = std::cos(b), sn = std::sin(b);
+  const Vec<S> rv = sn * n, dv = (a * c) * n + (sn / b) * perp;
+  return {{rv.x, rv.y, rv.z, c}, {dv.x, dv.y, dv.z, -a * sn}};
+}
+
 /// DQ-5 on validated input: both DQ-4 normalised, b' = -b iff a_r.b_r < 0 strictly (EDGE-3,
 /// decided on the inputs), then a (a* b')^t.
 template <class S> Dual<S> sclerp(const Dual<S>& a_in, const Dual<S>& b_in, S t) {
@@ -242,8 +293,9 @@ struct Dq {
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       "NORM-1", "COMPOSE-1", "INV-1",  "APPLY-1", "QUAT-2",                                  // Core (partial)
-      "DQ-1",   "DQ-2",      "DQ-3",   "DQ-4",    "DQ-5",   "DQ-6",   "DQ-7",   "AXIS-1",    // Rigid
+      "DQ-1",   "DQ-2",      "DQ-3",   "DQ-4",    "DQ-5",   "DQ-6",   "AXIS-1",              // Rigid
       "SKIN-1", "SKIN-2",    "SKIN-3",                                                       // Skinning
+      "DQ-7",   "DQ-8",      "DQ-9",   "RIGID-1", "RIGID-2", "RIGID-3",                      // Extended
       "EDGE-1", "EDGE-2",    "EDGE-3", "EDGE-4",  "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9",  // Robust
       nullptr};
 
@@ -308,6 +360,50 @@ struct Dq {
     const Dual<S> u = normalized(load(d));
     q = store(u.r);
     t = store(translation(u));
+    return Status::ok;
+  }
+
+  /// DQ-8 (ABI version 4): the log of DQ-4(sigma), out = [xi_r, xi_d].
+  static Status dq_log(const rci::DualQuat<S>& d, std::array<S, 6>& out) {
+    if (!valid(load(d))) return Status::domain_error;
+    const DualVec<S> xi = log(load(d));
+    out = {xi.r.x, xi.r.y, xi.r.z, xi.d.x, xi.d.y, xi.d.z};
+    return Status::ok;
+  }
+
+  /// DQ-9 (ABI version 4).
+  static Status dq_exp(const std::array<S, 6>& xi, rci::DualQuat<S>& out) {
+    const DualVec<S> x{{xi[0], xi[1], xi[2]}, {xi[3], xi[4], xi[5]}};
+    if (!finite(x.r) || !finite(x.d)) return Status::domain_error;
+    out = store(exp(x));
+    return Status::ok;
+  }
+
+  // -- rigid transforms as rotation + translation (ABI version 4) ---------------------------------
+
+  /// RIGID-1: (q^_a q^_b, R_a t_b + t_a).
+  static Status rigid_compose(const rci::Quat<S>& qa, const rci::Vec3<S>& ta, const rci::Quat<S>& qb,
+                              const rci::Vec3<S>& tb, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    if (!valid(load(qa)) || !valid(load(qb)) || !finite(load(ta)) || !finite(load(tb))) return Status::domain_error;
+    const Quat<S> ua = normalized(load(qa));
+    q = store(ua * normalized(load(qb)));
+    t = store(rotate(ua, load(tb)) + load(ta));
+    return Status::ok;
+  }
+
+  /// RIGID-2: R p + t.
+  static Status rigid_apply(const rci::Quat<S>& q, const rci::Vec3<S>& t, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
+    if (!valid(load(q)) || !finite(load(t)) || !finite(load(p))) return Status::domain_error;
+    out = store(rotate(normalized(load(q)), load(p)) + load(t));
+    return Status::ok;
+  }
+
+  /// RIGID-3: (q^*, -R^-1 t).
+  static Status rigid_inverse(const rci::Quat<S>& q_in, const rci::Vec3<S>& t_in, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    if (!valid(load(q_in)) || !finite(load(t_in))) return Status::domain_error;
+    const Quat<S> inv = conj(normalized(load(q_in)));
+    q = store(inv);
+    t = store(S(-1) * rotate(inv, load(t_in)));
     return Status::ok;
   }
 

@@ -61,7 +61,8 @@ struct EigenQuat {
       "Eigen user copies). Eigen has no n-way blend: QLB is glue written with Eigen operations "
       "following QLB-1's rules (weighted sum of coeffs, sign flip by the dot with the first "
       "influence of positive weight, normalized()), so only Eigen's arithmetic is certified. No "
-      "log/exp, no log-blend, no dual quaternions (NOT_SUPPORTED). Declares Eigen's documented "
+      "log/exp, no log-blend, no dual quaternions (NOT_SUPPORTED). Rigid transforms as Isometry3 "
+      "(Translation3 * Quaternion). Declares Eigen's documented "
       "preconditions (DECL-1): unit quaternions for the rotation operations, t in [0, 1] for "
       "slerp, a rotation matrix for Quaternion(Matrix3), a unit axis for AngleAxis.";
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_ROBUST;
@@ -69,6 +70,8 @@ struct EigenQuat {
       // Core
       "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "APPLY-3", "MAT-1", "MAT-2", "AXANG-1",
       "AXANG-2", "AXANG-3", "AXANG-4",
+      // Extended: rigid transforms as Eigen::Isometry3 (Translation * Quaternion)
+      "RIGID-1", "RIGID-2", "RIGID-3",
       // Interp: the ops Eigen has (no LOG-*, EXP-*)
       "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
       // Blend: QLB only
@@ -86,7 +89,9 @@ struct EigenQuat {
       // nlerp and QLB are glue with Eigen's operations (Eigen has neither); they take the
       // contract of the interpolation they copy, QuaternionBase::slerp (unit quaternions), so
       // that no FAIL of the glue on a zero or non-unit input is charged to Eigen.
-      "nlerp:unit_quaternion", "blend_qlb:unit_quaternion", nullptr};
+      "nlerp:unit_quaternion", "blend_qlb:unit_quaternion",
+      // Translation * Quaternion converts the quaternion with toRotationMatrix (normalized required).
+      "rigid_compose:unit_quaternion", "rigid_apply:unit_quaternion", "rigid_inverse:unit_quaternion", nullptr};
 
   // -- Core --
 
@@ -149,6 +154,31 @@ struct EigenQuat {
   }
   static Status to_axis(const Quat<S>& q, Vec3<S>& axis) {
     axis = from_eigen(EVec3<S>(Eigen::AngleAxis<S>(to_eigen(q)).axis()));
+    return Status::ok;
+  }
+  // ABI version 4: rigid transforms as an Eigen user holds them, Isometry3 = Translation3 *
+  // Quaternion (Transform<S, 3, Isometry>): composed with operator*, applied to a point with
+  // operator*, inverted with inverse() (which uses the Isometry mode: R^T, -R^T t), and read back
+  // with Quaternion(T.rotation()) (Isometry mode: the linear part itself) and T.translation().
+  using Isometry = Eigen::Transform<S, 3, Eigen::Isometry>;
+  static Isometry isometry(const Quat<S>& q, const Vec3<S>& t) {
+    return Isometry(Eigen::Translation<S, 3>(to_eigen(t)) * to_eigen(q));
+  }
+  static void split(const Isometry& m, Quat<S>& q, Vec3<S>& t) {
+    q = from_eigen(EQuat<S>(EMat3<S>(m.rotation())));
+    t = from_eigen(EVec3<S>(m.translation()));
+  }
+  static Status rigid_compose(const Quat<S>& qa, const Vec3<S>& ta, const Quat<S>& qb, const Vec3<S>& tb, Quat<S>& q,
+                              Vec3<S>& t) {
+    split(isometry(qa, ta) * isometry(qb, tb), q, t);
+    return Status::ok;
+  }
+  static Status rigid_apply(const Quat<S>& q, const Vec3<S>& t, const Vec3<S>& p, Vec3<S>& out) {
+    out = from_eigen(EVec3<S>(isometry(q, t) * to_eigen(p)));
+    return Status::ok;
+  }
+  static Status rigid_inverse(const Quat<S>& q_in, const Vec3<S>& t_in, Quat<S>& q, Vec3<S>& t) {
+    split(isometry(q_in, t_in).inverse(), q, t);
     return Status::ok;
   }
   // Quaternion(AngleAxis): Eigen documents a unit axis and uses it as given.

@@ -113,8 +113,9 @@ struct MotorPga {
       "PGA Cl(3,0,1) motors (hand-expanded products, closed-form exp/log) behind the dual-quaternion ABI";
   static constexpr std::uint32_t levels = RC_LEVEL_RIGID | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
-      "DQ-1",   "DQ-2",   "DQ-3",   "DQ-4",   "DQ-5",   "DQ-6",   "DQ-7",   "AXIS-1",            // Rigid
+      "DQ-1",   "DQ-2",   "DQ-3",   "DQ-4",   "DQ-5",   "DQ-6",   "AXIS-1",                      // Rigid
       "SKIN-2", "SKIN-3",                                                                        // Skinning
+      "DQ-7",   "DQ-8",   "DQ-9",   "RIGID-1", "RIGID-2", "RIGID-3",                             // Extended
       "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-9",  // Robust (EDGE-8: no quaternion ops)
       nullptr};
 
@@ -132,6 +133,64 @@ struct MotorPga {
     const std::array<S, 8> u = pga::to_dual_quaternion(m);
     q = {u[0], u[1], u[2], u[3]};
     t = move_point(m, rci::Vec3<S>{S(0), S(0), S(0)});
+    return Status::ok;
+  }
+
+  /// DQ-8 (ABI version 4): the motor log of the unit motor, xi = -(its bivector coefficients)
+  /// (MOTOR-1 negates them). The closed-form log needs <M>_0 > -1; at the branch cut (rotor part
+  /// -1, then M = -T(t)) the axis is taken along the translation t: xi = (pi t/|t|, t/2), +z for
+  /// t = 0.
+  static Status dq_log(const rci::DualQuat<S>& d, std::array<S, 6>& out) {
+    if (!valid_dq(d)) return Status::domain_error;
+    const Motor<S> m = unit_motor(d);
+    if (m.e23 == 0 && m.e31 == 0 && m.e12 == 0 && m.s < 0) {
+      const rci::Vec3<S> t = move_point(m, rci::Vec3<S>{S(0), S(0), S(0)});
+      const S len = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+      const S pi = S(3.14159265358979323846264338327950288);
+      if (len == 0) out = {0, 0, pi, 0, 0, 0};
+      else out = {pi / len * t[0], pi / len * t[1], pi / len * t[2], t[0] / 2, t[1] / 2, t[2] / 2};
+      return Status::ok;
+    }
+    const pga::Bivector<S> b = pga::log(m);
+    out = {-b.e23, -b.e31, -b.e12, -b.e01, -b.e02, -b.e03};
+    return Status::ok;
+  }
+
+  /// DQ-9 (ABI version 4): exp of the bivector -(xi_r, xi_d) (MOTOR-1), in closed form.
+  static Status dq_exp(const std::array<S, 6>& xi, rci::DualQuat<S>& out) {
+    if (!finite(xi)) return Status::domain_error;
+    out = pga::to_dual_quaternion(pga::exp(pga::Bivector<S>{-xi[0], -xi[1], -xi[2], -xi[3], -xi[4], -xi[5]}));
+    return Status::ok;
+  }
+
+  // -- rigid transforms as rotation + translation (ABI version 4): motors T(t) R ----------------
+
+  /// The rotation and translation of a unit motor M = T R: R read back by MOTOR-1, t = M O ~M.
+  static void split(const Motor<S>& m, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    const std::array<S, 8> u = pga::to_dual_quaternion(m);
+    q = {u[0], u[1], u[2], u[3]};
+    t = move_point(m, rci::Vec3<S>{S(0), S(0), S(0)});
+  }
+
+  /// RIGID-1: the product T(t_a) R_a T(t_b) R_b of the two motors.
+  static Status rigid_compose(const rci::Quat<S>& qa, const rci::Vec3<S>& ta, const rci::Quat<S>& qb,
+                              const rci::Vec3<S>& tb, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    if (!valid_rotation(qa) || !valid_rotation(qb) || !finite(ta) || !finite(tb)) return Status::domain_error;
+    split(rigid(qa, ta) * rigid(qb, tb), q, t);
+    return Status::ok;
+  }
+
+  /// RIGID-2: the sandwich of the point by T(t) R.
+  static Status rigid_apply(const rci::Quat<S>& q, const rci::Vec3<S>& t, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
+    if (!valid_rotation(q) || !finite(t) || !finite(p)) return Status::domain_error;
+    out = move_point(rigid(q, t), p);
+    return Status::ok;
+  }
+
+  /// RIGID-3: the reverse ~M = ~R T(-t) of the unit motor.
+  static Status rigid_inverse(const rci::Quat<S>& q_in, const rci::Vec3<S>& t_in, rci::Quat<S>& q, rci::Vec3<S>& t) {
+    if (!valid_rotation(q_in) || !finite(t_in)) return Status::domain_error;
+    split(pga::reverse(rigid(q_in, t_in)), q, t);
     return Status::ok;
   }
 

@@ -63,6 +63,12 @@ std::string validate_table(const rc_impl& t) {
     if (t.scalar == RC_SCALAR_FLOAT64 && t.f32_v3 != nullptr)
       return std::string(t.name) + ": double table must not set f32_v3 (ABI version 3)";
   }
+  if (t.abi_version >= 4) {
+    if (t.scalar == RC_SCALAR_FLOAT32 && t.f64_v4 != nullptr)
+      return std::string(t.name) + ": float table must not set f64_v4 (ABI version 4)";
+    if (t.scalar == RC_SCALAR_FLOAT64 && t.f32_v4 != nullptr)
+      return std::string(t.name) + ": double table must not set f32_v4 (ABI version 4)";
+  }
   return {};
 }
 

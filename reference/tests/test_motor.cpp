@@ -283,6 +283,77 @@ TEST(Motor, InterpolationEqualsScLERP) {
   });
 }
 
+// ---- DQ-8, DQ-9: the motor log and exp in dual-quaternion coordinates ----------------------------
+
+/// The motor bivector of a dual vector xi (MOTOR-1 is linear: -(xi_r on e23, e31, e12) -
+/// (xi_d on e01, e02, e03)).
+PMV motor_bivector(const DualVector<Real>& xi) {
+  return pga::bivector<Real>({-xi.real[0], -xi.real[1], -xi.real[2]}, {-xi.dual[0], -xi.dual[1], -xi.dual[2]});
+}
+
+TEST(Motor, DualQuaternionExpIsTheMotorExp) {
+  RC_CLAUSE("DQ-9");
+  check_cases(50, [] {
+    const DualVector<Real> xi{*vector3(4), *translation()};
+    const auto e = DQ_9_exp(xi);
+    RC_ASSERT(e.status == Status::ok);
+    // The series of the algebra (EXPSERIES-1), not the closed form the function uses.
+    RC_ASSERT(near(MOTOR_1_from_dual_quaternion(e.value), exp_series(motor_bivector(xi))));
+  });
+  const V3 zero{Real(0), Real(0), Real(0)};
+  const V3 t{Real(3), Real(-5), Real(1) / Real(3)};
+  const auto translator = DQ_9_exp(DualVector<Real>{zero, t});  // b = 0: 1 + eps xi_d
+  EXPECT_TRUE(near(translator.value, DQ{Quaternion<Real>::identity(), {Real(0), t[0], t[1], t[2]}}));
+  EXPECT_EQ(DQ_9_exp(DualVector<Real>{{Real(1), ScalarTraits<Real>::nan(), Real(0)}, zero}).status, Status::domain_error);
+}
+
+TEST(Motor, DualQuaternionLogIsTheMotorLog) {
+  RC_CLAUSE("DQ-8");
+  check_cases(50, [] {
+    const DQ d = disturbed(*rigid_dq(), *nonzero_scale(), *real_in(4));  // non-unit: DQ-4 first
+    const auto l = DQ_8_log(d);
+    RC_ASSERT(l.status == Status::ok);
+    RC_ASSERT(near(motor_bivector(l.value), MOTOR_4_log(MOTOR_1_from_dual_quaternion(d))));
+    // exp(log sigma) = DQ-4(sigma), w < 0 included (no hemisphere flip: |xi_r| in [0, pi]).
+    RC_ASSERT(near(DQ_9_exp(l.value).value, DQ_4_normalize(d).value));
+    RC_ASSERT(pga::norm3(l.value.real) <= ScalarTraits<Real>::pi());
+  });
+}
+
+TEST(Motor, DualQuaternionLogAtTheBranchCut) {
+  RC_CLAUSE("DQ-8");
+  // r = -1: the rotation by 2 pi about the translation's direction, xi = (pi t/|t|, t/2).
+  const Real pi = ScalarTraits<Real>::pi();
+  const V3 t{Real(2), Real(-3), Real(6)};  // |t| = 7
+  const DQ sigma = DQ_1_from_rotation_translation(Quaternion<Real>{Real(-1), Real(0), Real(0), Real(0)}, t).value;
+  const auto l = DQ_8_log(sigma);
+  EXPECT_TRUE(near(l.value.real, V3{pi * Real(2) / Real(7), pi * Real(-3) / Real(7), pi * Real(6) / Real(7)}));
+  EXPECT_TRUE(near(l.value.dual, V3{Real(1), Real(-3) / Real(2), Real(3)}));
+  EXPECT_TRUE(near(DQ_9_exp(l.value).value, sigma));
+  // No translation either: LOG-2's +z.
+  const auto minus_one = DQ_8_log(DQ{{Real(-1), Real(0), Real(0), Real(0)}, {Real(0), Real(0), Real(0), Real(0)}});
+  EXPECT_TRUE(near(minus_one.value.real, V3{Real(0), Real(0), pi}));
+  EXPECT_TRUE(near(minus_one.value.dual, V3{Real(0), Real(0), Real(0)}));
+  // log 1 = 0 exactly; a zero real part is DOMAIN_ERROR (EDGE-6).
+  const auto one = DQ_8_log(DQ{Quaternion<Real>::identity(), {Real(0), Real(0), Real(0), Real(0)}});
+  EXPECT_TRUE(one.value.real == (V3{Real(0), Real(0), Real(0)}) && one.value.dual == (V3{Real(0), Real(0), Real(0)}));
+  EXPECT_EQ(DQ_8_log(DQ{{Real(0), Real(0), Real(0), Real(0)}, {Real(1), Real(0), Real(0), Real(0)}}).status,
+            Status::domain_error);
+}
+
+TEST(Motor, DualQuaternionLogInvertsExp) {
+  RC_CLAUSE("DQ-8");
+  RC_CLAUSE("DQ-9");
+  check_cases(50, [] {
+    // |xi_r| < pi: the principal log gives xi back.
+    const V3 e = *rc::gen::suchThat(vector3(2), [](const V3& v) { return pga::norm3(v) < Real(3); });
+    const DualVector<Real> xi{e, *translation()};
+    const auto back = DQ_8_log(DQ_9_exp(xi).value);
+    RC_ASSERT(near(back.value.real, xi.real));
+    RC_ASSERT(near(back.value.dual, xi.dual));
+  });
+}
+
 // ---- MOTOR-5: motor blend against DLB -------------------------------------------------------
 
 TEST(Motor, BlendEqualsDLB) {

@@ -359,6 +359,7 @@ template <class T, std::size_t N> bool all_nan(const std::array<T, N>& a) {
   return std::all_of(a.begin(), a.end(), [](const T& x) { return all_nan(x); });
 }
 template <class T> bool all_nan(const DualQuaternion<T>& d) { return all_nan(d.real) && all_nan(d.dual); }
+template <class T> bool all_nan(const RotationTranslation<T>& r) { return all_nan(r.q) && all_nan(r.t); }
 
 template <class V>
 bool is_domain_error(const Result<V>& r) { return r.status == Status::domain_error && all_nan(r.value); }
@@ -529,6 +530,53 @@ TEST(RigidEdge, NonUnitRealPartIsNormalised) {
     const auto q = DQ_3_apply_point<double>(d, {1, 2, 3});
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(p.value[i], q.value[i], 1e-13) << k;
   }
+}
+
+// ---- RIGID-1 .. RIGID-3: rotation + translation against the matrix formula and DQ-2/DQ-3 --------
+
+TEST(RigidTransform, ApplyRotatesThenTranslates) {
+  RC_CLAUSE("RIGID-2");
+  check_cases(50, [] {
+    const Q q = *quaternion();  // non-unit: the rotation of q/|q| (EDGE-5)
+    RC_PRE(norm(q) > Real(1) / Real(64));
+    const V3 t = *translation(), p = *translation();
+    const auto r = RIGID_2_apply(q, t, p);
+    RC_ASSERT(r.status == Status::ok);
+    RC_ASSERT(near(r.value, add(matrix_rotate(unit_of(q), p), t)));
+    RC_ASSERT(near(r.value, DQ_3_apply_point(DQ_1_from_rotation_translation(q, t).value, p).value));
+  });
+}
+
+TEST(RigidTransform, ComposeAppliesTheRightOperandFirst) {
+  RC_CLAUSE("RIGID-1");
+  check_cases(50, [] {
+    const Q qa = *unit_quaternion(), qb = *unit_quaternion();
+    const V3 ta = *translation(), tb = *translation(), p = *translation();
+    const auto c = RIGID_1_compose(qa, ta, qb, tb);
+    RC_ASSERT(c.status == Status::ok);
+    // (a o b)(p) = a(b(p)), by the matrix formula.
+    const V3 twice = add(matrix_rotate(qa, add(matrix_rotate(qb, p), tb)), ta);
+    RC_ASSERT(near(RIGID_2_apply(c.value.q, c.value.t, p).value, twice));
+    // The same motion as DQ-2's product of the two DQ-1 motions.
+    const DQ product = DQ_2_compose(DQ_1_from_rotation_translation(qa, ta).value, DQ_1_from_rotation_translation(qb, tb).value).value;
+    RC_ASSERT(same_motion(DQ_1_from_rotation_translation(c.value.q, c.value.t).value, product));
+  });
+}
+
+TEST(RigidTransform, InverseUndoesTheTransform) {
+  RC_CLAUSE("RIGID-3");
+  check_cases(50, [] {
+    const Q q = *unit_quaternion();
+    const V3 t = *translation(), p = *translation();
+    const auto inv = RIGID_3_inverse(q, t);
+    RC_ASSERT(inv.status == Status::ok);
+    RC_ASSERT(near(RIGID_2_apply(inv.value.q, inv.value.t, RIGID_2_apply(q, t, p).value).value, p));
+    RC_ASSERT(near(inv.value.q, conj(q)));
+  });
+  const V3 t{Real(1), Real(2), Real(3)};
+  EXPECT_TRUE(is_domain_error(RIGID_3_inverse(Q{Real(0), Real(0), Real(0), Real(0)}, t)));  // EDGE-6
+  EXPECT_TRUE(is_domain_error(RIGID_1_compose(Q::identity(), t, Q::identity(), V3{Real(1), Real(std::numeric_limits<double>::infinity()), Real(0)})));  // EDGE-7
+  EXPECT_TRUE(is_domain_error(RIGID_2_apply(Q::identity(), t, V3{ScalarTraits<Real>::nan(), Real(0), Real(0)})));
 }
 
 }  // namespace

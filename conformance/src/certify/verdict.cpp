@@ -24,7 +24,8 @@ std::string unit_of(const engine::AbiOp& op) {
     case engine::Measure::bivector:
     case engine::Measure::angle: return "rad";
     case engine::Measure::rigid:
-    case engine::Measure::unit_rigid: return "rad/relative";
+    case engine::Measure::unit_rigid:
+    case engine::Measure::dual_parts: return "rad/relative";
     default: return "relative";
   }
 }

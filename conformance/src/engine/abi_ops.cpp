@@ -70,6 +70,30 @@ Real rigid_scale(const DQ& d, const V3& p) {
 
 Real unit_scale(const Values&, std::size_t) { return Real(1); }
 
+std::vector<Real> join(std::vector<Real> a, const std::vector<Real>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+ref::DualVector<Real> dual_vector(const std::vector<Real>& a) { return {vec3(a, 0), vec3(a, 1)}; }
+ReferenceResult pair(const ref::Result<ref::RotationTranslation<Real>>& r) {
+  return {r.status, {flat(r.value.q), flat(r.value.t)}};
+}
+
+/// DQ-8's error scale: max(1, |xi_ref|, kappa |d_v|) with kappa = b / sin b, (r, d) = DQ-4(sigma),
+/// b = atan2(|r_v|, r_w). xi_d holds (b / sin b) d_perp, so an error of eps |d_v| in the dual part
+/// (the rounding of the input itself) becomes kappa eps |d_v|: the log's own condition near the
+/// branch cut b = pi, where no implementation in the format can do better. kappa = 1 at the cut
+/// itself (sin b = 0: the spec's choice of axis, no amplification).
+Real dq_log_scale(const Values& in, std::size_t) {
+  const DQ sigma = dq(in[0]);
+  if (!ref::finite(sigma) || ref::is_zero(sigma.real)) return Real(1);
+  const DQ u = clause::DQ_4_normalize(sigma).value;
+  const auto xi = clause::DQ_8_log(sigma).value;
+  const Real s = length(V3{u.real.x, u.real.y, u.real.z});
+  const Real kappa = s == 0 ? Real(1) : std::max(Real(1), Real(atan2(s, u.real.w) / s));
+  return std::max({Real(1), Real(length(xi.real) + length(xi.dual)), Real(kappa * length(V3{u.dual.x, u.dual.y, u.dual.z}))});
+}
+
 /// SQRT-1: for finite nonzero q with q^ = q/|q| != -1, s = (1 + q^)/|1 + q^| (the unique s with
 /// s^2 = q^ and s.w > 0: half the angle of AXANG-1 about the same axis); q^ = -1 (v = 0, w < 0):
 /// s = (0, 0, 1, 0), +z exactly (LOG-2's axis). 1 + w^ is formed as |v^|^2 / (1 - w^) for w^ < 0,
@@ -210,6 +234,31 @@ std::vector<AbiOp> build() {
          if (!ref::finite(sigma) || ref::is_zero(sigma.real)) return Real(1);
          return std::max(Real(1), length(clause::dual_quaternion_translation(sigma)));
        }});
+  // ---- ABI version 4 ----
+  const Array xi{"xi", 6}, rq{"q", 4}, rt{"t", 3};
+  add({"dq_log", {d}, {out("out_xi", 6, Measure::point)}, false,
+       [](const Values& in, std::size_t) {
+         const auto r = clause::DQ_8_log(dq(in[0]));
+         return ReferenceResult{r.status, {join(flat(r.value.real), flat(r.value.dual))}};
+       },
+       dq_log_scale});
+  add({"dq_exp", {xi}, {out("out_d", 8, Measure::dual_parts)}, false,
+       [](const Values& in, std::size_t) { return one(clause::DQ_9_exp(dual_vector(in[0]))); },
+       // DQ-9: the dual part carries the rounding of xi_d, which near b = pi (sin b -> 0) can be
+       // far larger than the output's translation.
+       [](const Values& in, std::size_t) { return std::max(Real(1), length_of(in[0], 1)); }});
+  add({"rigid_compose", {Array{"qa", 4}, Array{"ta", 3}, Array{"qb", 4}, Array{"tb", 3}},
+       {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)}, false,
+       [](const Values& in, std::size_t) {
+         return pair(clause::RIGID_1_compose(quat(in[0]), vec3(in[1]), quat(in[2]), vec3(in[3])));
+       },
+       [](const Values& in, std::size_t) { return std::max({Real(1), length_of(in[1], 0), length_of(in[3], 0)}); }});
+  add({"rigid_apply", {rq, rt, Array{"p", 3}}, {out("out_p", 3, Measure::point)}, false,
+       [](const Values& in, std::size_t) { return one(clause::RIGID_2_apply(quat(in[0]), vec3(in[1]), vec3(in[2]))); },
+       [](const Values& in, std::size_t) { return std::max({Real(1), length_of(in[1], 0), length_of(in[2], 0)}); }});
+  add({"rigid_inverse", {rq, rt}, {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)}, false,
+       [](const Values& in, std::size_t) { return pair(clause::RIGID_3_inverse(quat(in[0]), vec3(in[1]))); },
+       [](const Values& in, std::size_t) { return std::max(Real(1), length_of(in[1], 0)); }});
   return ops;
 }
 
@@ -283,10 +332,41 @@ bool is_v3_op(const std::string& op) {
   return op == "to_angle" || op == "to_axis" || op == "sqrt" || op == "dq_to_rotation_translation";
 }
 
+/// The operations of ABI version 4 (rc_ops4_*), same conventions as call_ops.
+template <class S, class Ops4>
+int call_ops4(const Ops4& o, const std::string& op, std::size_t n, const std::vector<const void*>& in,
+              const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
+  auto I = [&](std::size_t i) { return cin<S>(in, i); };
+  auto O = [&](std::size_t i) { return cout<S>(out, i); };
+#define RC_CALL(slot, ...)                         \
+  if (op == #slot) {                               \
+    if (o.slot == nullptr) return -1;              \
+    return probe_only ? 0 : (o.slot)(__VA_ARGS__); \
+  }
+  RC_CALL(dq_log, n, I(0), O(0), st)
+  RC_CALL(dq_exp, n, I(0), O(0), st)
+  RC_CALL(rigid_compose, n, I(0), I(1), I(2), I(3), O(0), O(1), st)
+  RC_CALL(rigid_apply, n, I(0), I(1), I(2), O(0), st)
+  RC_CALL(rigid_inverse, n, I(0), I(1), O(0), O(1), st)
+#undef RC_CALL
+  return -1;
+}
+
+/// Whether op is one of ABI version 4 (rc_ops4_*).
+bool is_v4_op(const std::string& op) {
+  return op == "dq_log" || op == "dq_exp" || op == "rigid_compose" || op == "rigid_apply" || op == "rigid_inverse";
+}
+
 /// Calls (or probes) op through the part of the table that holds it: a version-3 op only through
 /// f32_v3 / f64_v3 of a table whose abi_version is >= 3 (an older table's memory ends before them).
 int dispatch(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
              const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status, bool probe) {
+  if (is_v4_op(op)) {
+    if (table.abi_version < 4) return -1;
+    if (table.scalar == RC_SCALAR_FLOAT32 && table.f32_v4) return call_ops4<float>(*table.f32_v4, op, n, in, out, status, probe);
+    if (table.scalar == RC_SCALAR_FLOAT64 && table.f64_v4) return call_ops4<double>(*table.f64_v4, op, n, in, out, status, probe);
+    return -1;
+  }
   if (is_v3_op(op)) {
     if (table.abi_version < 3) return -1;
     if (table.scalar == RC_SCALAR_FLOAT32 && table.f32_v3) return call_ops3<float>(*table.f32_v3, op, n, in, out, status, probe);

@@ -26,7 +26,9 @@ const std::map<std::string, std::vector<std::string>>& clause_ops() {
       "to_axis_angle", "log", "slerp", "nlerp", "blend_qlb", "blend_log", "to_angle", "to_axis", "sqrt"};
   static const std::vector<std::string> rigid_ops = {"dq_from_rotation_translation", "dq_compose", "dq_apply_point",
                                                     "dq_normalize", "dq_sclerp", "dq_blend",
-                                                    "dq_to_rotation_translation"};
+                                                    "dq_to_rotation_translation", "dq_log"};
+  // Rigid transforms as rotation + translation (RIGID-1 .. RIGID-3): quaternion inputs, vectors.
+  static const std::vector<std::string> rotation_translation_ops = {"rigid_compose", "rigid_apply", "rigid_inverse"};
   static const std::vector<std::string> weighted_ops = {"blend_qlb", "blend_log", "dq_blend", "skin_linear",
                                                         "skin_dual_quaternion"};
   auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -68,20 +70,28 @@ const std::map<std::string, std::vector<std::string>>& clause_ops() {
       {"DQ-5", {"dq_sclerp"}},
       {"DQ-6", {"dq_blend"}},
       {"DQ-7", {"dq_to_rotation_translation"}},
+      {"DQ-8", {"dq_log"}},
+      {"DQ-9", {"dq_exp"}},
+      {"RIGID-1", {"rigid_compose"}},
+      {"RIGID-2", {"rigid_apply"}},
+      {"RIGID-3", {"rigid_inverse"}},
       {"AXIS-1", {"rotate_about_axis"}},
       {"SKIN-1", {"skin_linear"}},
       {"SKIN-2", {"skin_dual_quaternion"}},
       {"SKIN-3", {"skin_linear", "skin_dual_quaternion"}},
       {"EDGE-1", {"normalize", "compose", "inverse", "apply_vector", "to_matrix", "from_matrix", "log", "exp", "slerp",
-                  "nlerp", "blend_qlb", "blend_log", "dq_compose", "dq_normalize", "dq_sclerp", "dq_blend"}},
+                  "nlerp", "blend_qlb", "blend_log", "dq_compose", "dq_normalize", "dq_sclerp", "dq_blend", "dq_log",
+                  "dq_exp"}},
       {"EDGE-2", {"compose", "to_axis_angle", "log", "exp", "slerp", "nlerp", "blend_qlb", "blend_log", "dq_sclerp"}},
       {"EDGE-3", {"slerp", "nlerp", "blend_qlb", "dq_sclerp", "dq_blend"}},
       {"EDGE-4", {"compose", "inverse", "apply_vector", "to_matrix", "slerp", "nlerp", "blend_qlb", "dq_apply_point"}},
-      {"EDGE-5", join(quaternion_ops, {"dq_apply_point", "dq_normalize", "dq_sclerp", "dq_blend", "from_axis_angle",
-                                       "rotate_about_axis", "dq_to_rotation_translation"})},
-      {"EDGE-6", join(join(quaternion_ops, rigid_ops), {"from_axis_angle", "rotate_about_axis"})},
-      {"EDGE-7", join(join(quaternion_ops, rigid_ops), {"from_matrix", "from_axis_angle", "exp", "rotate_about_axis",
-                                                        "skin_linear", "skin_dual_quaternion"})},
+      {"EDGE-5", join(join(quaternion_ops, rotation_translation_ops),
+                      {"dq_apply_point", "dq_normalize", "dq_sclerp", "dq_blend", "from_axis_angle", "rotate_about_axis",
+                       "dq_to_rotation_translation", "dq_log"})},
+      {"EDGE-6", join(join(join(quaternion_ops, rigid_ops), rotation_translation_ops), {"from_axis_angle", "rotate_about_axis"})},
+      {"EDGE-7", join(join(join(quaternion_ops, rigid_ops), rotation_translation_ops),
+                      {"from_matrix", "from_axis_angle", "exp", "rotate_about_axis", "skin_linear", "skin_dual_quaternion",
+                       "dq_exp"})},
       {"EDGE-8", {"normalize", "apply_vector", "to_matrix", "slerp", "nlerp", "log", "to_angle", "to_axis", "sqrt"}},
       {"EDGE-9", weighted_ops},
   };
@@ -201,8 +211,22 @@ Case random_case(Gen& g, const std::string& op, std::size_t k = 0) {
     c.inputs = {q(), flat(g.vector(-1, 3))};
   } else if (op == "dq_compose") {
     c.inputs = {flat(g.rigid(3)), flat(g.rigid(3))};
-  } else if (op == "dq_to_rotation_translation") {
+  } else if (op == "dq_to_rotation_translation" || op == "dq_log") {
     c.inputs = {flat(g.rigid(3))};
+  } else if (op == "dq_exp") {
+    // A screw: rotation part of any length up to 3 (beyond pi/2 included), a translation part of
+    // length 10^U(-1, 3).
+    const V3 d = g.direction();
+    const Real len(g.uniform(0, 3));
+    std::vector<Real> xi = {g.round(d[0] * len), g.round(d[1] * len), g.round(d[2] * len)};
+    append(xi, flat(g.vector(-1, 3)));
+    c.inputs = {xi};
+  } else if (op == "rigid_compose") {
+    c.inputs = {q(), flat(g.vector(-1, 3)), q(), flat(g.vector(-1, 3))};
+  } else if (op == "rigid_apply") {
+    c.inputs = {q(), flat(g.vector(-1, 3)), flat(g.vector(-1, 3))};
+  } else if (op == "rigid_inverse") {
+    c.inputs = {q(), flat(g.vector(-1, 3))};
   } else if (op == "dq_apply_point") {
     c.inputs = {flat(g.rigid(3)), flat(g.vector(-1, 3))};
   } else if (op == "dq_normalize") {
@@ -361,7 +385,16 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
     } else if (op == "compose") {
       c.inputs[0] = flat(rounded_rotation(g, angle));
       c.inputs[1] = flat(rounded_rotation(g, angle));
-    } else if (op == "dq_to_rotation_translation") {
+    } else if (op == "rigid_compose") {
+      c.inputs[0] = flat(rounded_rotation(g, angle));
+      c.inputs[2] = flat(rounded_rotation(g, angle));
+    } else if (op == "rigid_apply" || op == "rigid_inverse") {
+      c.inputs[0] = flat(rounded_rotation(g, angle));
+    } else if (op == "dq_exp") {
+      const V3 d = g.direction();
+      const Real h = angle / Real(2);
+      c.inputs[0][0] = g.round(d[0] * h), c.inputs[0][1] = g.round(d[1] * h), c.inputs[0][2] = g.round(d[2] * h);
+    } else if (op == "dq_to_rotation_translation" || op == "dq_log") {
       // The rigid motion of that rotation and a random translation, DQ-1 exactly, then rounded.
       const V3 d = g.direction();
       const Real len = pow(Real(10), Real(g.uniform(-1, 3)));
@@ -373,7 +406,8 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
     return c;
   };
   const bool rotation_valued = single || op == "exp" || op == "from_axis_angle" || op == "from_matrix" || op == "compose" ||
-                               op == "dq_to_rotation_translation";
+                               op == "dq_to_rotation_translation" || op == "dq_log" || op == "dq_exp" ||
+                               op == "rigid_compose" || op == "rigid_apply" || op == "rigid_inverse";
   if (rotation_valued) {
     // One angle per decade whatever n is (2e-9, 2e-8, ..., 2): no decade is left to chance.
     for (int k = -9; k <= 0; ++k) cases.push_back(rotation_case(Real(2) * pow(Real(10), Real(k)), "angle sweep 1e-9 .. pi"));
@@ -487,7 +521,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion"});
       cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components"});
     }
-  } else if (clause == "DQ-7") {
+  } else if (clause == "DQ-7" || clause == "DQ-8") {
     repeat([&](int) { return random(); });
     // DQ-4 first: a real part off unit (within the ordinary 2^-6) and a dual part with a component
     // along the real part, which carries no translation and must be removed.
@@ -498,6 +532,29 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       for (int i = 0; i < 8; ++i) v[i] = g.round(v[i] * s);
       for (int i = 4; i < 8; ++i) v[i] = g.round(v[i] + v[i - 4] * Real(g.uniform(-0.5, 0.5)));
       return labelled(c, "dual part not orthogonal to the real part");
+    });
+    if (clause == "DQ-8") {
+      // The branch cut r = -1: xi = (pi t/|t|, t/2), and (pi (0, 0, 1), 0) without a translation
+      // (another log of sigma with |xi_r| = pi: ACC-1 minus_one_axis).
+      repeat([&](int i) {
+        const V3 t = i % 4 == 0 ? V3{Real(0), Real(0), Real(0)} : g.vector(-1, 3);
+        const auto r = ref::clause::DQ_1_from_rotation_translation(Quat{Real(-1), Real(0), Real(0), Real(0)}, t).value;
+        Case c{{flat(ref::DualQuaternion<Real>{g.rounded(r.real), g.rounded(r.dual)})}, 0, ""};
+        return labelled(c, i % 4 == 0 ? "real part -1, no translation" : "real part -1 (the branch cut)");
+      });
+    }
+  } else if (clause == "DQ-9") {
+    repeat([&](int) { return random(); });
+    repeat([&](int i) {
+      Case c = random();
+      if (i % 2 == 0) {  // a pure translation: xi_r = 0, exp = (1, (0, xi_d)) exactly
+        for (int j = 0; j < 3; ++j) c.inputs[0][std::size_t(j)] = Real(0);
+        return labelled(c, "pure translation (xi_r = 0)");
+      }
+      const V3 d = g.direction();  // beyond a half turn of the rotor: |xi_r| in (pi, 3 pi)
+      const Real len(g.uniform(M_PI, 3 * M_PI));
+      for (int j = 0; j < 3; ++j) c.inputs[0][std::size_t(j)] = g.round(d[std::size_t(j)] * len);
+      return labelled(c, "|xi_r| in (pi, 3 pi)");
     });
   } else if (clause == "LOG-2") {
     for (double s : {1.0, 0.5, 3.0})
@@ -549,6 +606,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
     const std::vector<Real> did = {Real(0), Real(0), Real(0), Real(1), Real(0), Real(0), Real(0), Real(0)};
     Case c = with_all(random(2), op, id, did);
     if (op == "exp") c.inputs[0] = {Real(0), Real(0), Real(0)};
+    if (op == "dq_exp") c.inputs[0] = std::vector<Real>(6, Real(0));
     if (op == "from_matrix") c.inputs[0] = {Real(1), Real(0), Real(0), Real(0), Real(1), Real(0), Real(0), Real(0), Real(1)};
     if (op == "apply_vector") c.inputs[1] = flat(g.vector(-1, 1));
     cases.push_back(labelled(c, "identity"));
@@ -758,7 +816,8 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
   // a full turn and, for pairs and blends, the antipodal, near-identical and unequal-scale pairs.
   static const std::set<std::string> ordinary = {"APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2", "AXANG-3",
                                                  "AXANG-4", "COMPOSE-1", "LOG-1", "EXP-1", "SQRT-1", "SLERP-1",
-                                                 "SLERP-2", "NLERP-1", "QLB-1", "LOGBLEND-1", "DQ-5", "DQ-6", "DQ-7"};
+                                                 "SLERP-2", "NLERP-1", "QLB-1", "LOGBLEND-1", "DQ-5", "DQ-6", "DQ-7",
+                                                 "DQ-8", "DQ-9", "RIGID-1", "RIGID-2", "RIGID-3"};
   if (ordinary.count(clause)) add_ordinary_families(cases, g, op, n);
 }
 

@@ -8,7 +8,7 @@ namespace {
 bool is_quaternion_output(const Array& a) {
   return a.measure == Measure::rotation || a.measure == Measure::quaternion || a.measure == Measure::unit_rotation ||
          a.measure == Measure::canonical_rotation ||
-         a.measure == Measure::rigid || a.measure == Measure::unit_rigid;
+         a.measure == Measure::rigid || a.measure == Measure::unit_rigid || a.measure == Measure::dual_parts;
 }
 
 /// Applies f to every 4-scalar quaternion block ([x, y, z, w]) of the arrays selected by `pick`;

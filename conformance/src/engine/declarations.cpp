@@ -5,6 +5,8 @@
 
 #include <rotorcert/engine/cases.hpp>
 #include <rotorcert/engine/runner.hpp>
+#include <rotorcert/reference/metrics.hpp>
+#include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
 namespace rotorcert::engine {
@@ -332,6 +334,43 @@ std::vector<AcceptableConvention> build_conventions() {
                    if (negative_real(want) && block_norm(got[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2))
                      return std::nullopt;  // pi u': minus_one_axis
                    return log_error(got, want);
+                 }});
+
+  // DQ-8: every xi' with DQ-9(xi') = +-sigma and |xi'_r| <= pi is a logarithm of the rigid motion;
+  // at r = -1 (minus_one_axis) the axis is free up to exp(xi') = sigma, and where r_w <= 0 the log
+  // of -sigma (shorter_arc) is the same motion. Measured as METRIC-7 of DQ-9(xi') against sigma.
+  const auto dq_log_error = [](const Case& c, const Values& got) -> Real {
+    const V3 r{got[0][0], got[0][1], got[0][2]}, d{got[0][3], got[0][4], got[0][5]};
+    const auto e = clause::DQ_9_exp(ref::DualVector<Real>{r, d});
+    if (e.status != ref::Status::ok) return ref::ScalarTraits<Real>::nan();
+    const std::vector<Real>& in = c.inputs[0];
+    const ref::DualQuaternion<Real> sigma{quat(in, 0), quat(in, 1)};
+    const auto m = clause::METRIC_7_rigid_error(e.value, sigma);
+    const Real excess = std::max(Real(0), block_norm(got[0], 0, 3) - ref::ScalarTraits<Real>::pi());
+    return std::max({m.rotation, m.translation, excess});
+  };
+  const auto negative_real_part = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
+  all.push_back({"minus_one_axis", "dq_log of a dual quaternion whose real part is a negative real returns another log of it (|xi_r| = pi)",
+                 false, is("dq_log"),
+                 [negative_real_part](const AbiOp&, const Case& c, const Values&, ref::Format) { return negative_real_part(c); },
+                 [negative_real_part, dq_log_error](const AbiOp&, const Case& c, const Values& got, const Values&,
+                                                    ref::Format) -> std::optional<Real> {
+                   if (!negative_real_part(c) || block_norm(got[0], 0, 3) < ref::ScalarTraits<Real>::pi() / Real(2))
+                     return std::nullopt;
+                   return dq_log_error(c, got);
+                 }});
+  const auto obtuse_real_part = [](const Values& want) {
+    return block_norm(want[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2) - Real(1e-60);
+  };
+  all.push_back({"shorter_arc", "dq_log returns the logarithm of -sigma (|xi_r| <= pi/2) where r_w <= 0: the same rigid motion",
+                 false, is("dq_log"),
+                 [obtuse_real_part](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse_real_part(want); },
+                 [obtuse_real_part, negative_real_part, dq_log_error](const AbiOp&, const Case& c, const Values& got,
+                                                                      const Values& want, ref::Format) -> std::optional<Real> {
+                   if (!obtuse_real_part(want)) return std::nullopt;
+                   if (negative_real_part(c) && block_norm(got[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2))
+                     return std::nullopt;  // pi u': minus_one_axis
+                   return dq_log_error(c, got);
                  }});
 
   // EDGE-3: at a hemisphere tie (|a.b| within rounding of 0) both arcs have the same length; the

@@ -117,8 +117,9 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
     }
     case Measure::vector:
       return clause::METRIC_3_vector_error<Real>({got[0], got[1], got[2]}, {want[0], want[1], want[2]}, tiny);
-    case Measure::point: {
-      std::vector<Real> d{got[0] - want[0], got[1] - want[1], got[2] - want[2]};
+    case Measure::point: {  // every component of the array: a point, or DQ-8's dual vector
+      std::vector<Real> d;
+      for (std::size_t i = 0; i < want.size() && i < got.size(); ++i) d.push_back(got[i] - want[i]);
       return norm(d) / scale;
     }
     case Measure::bivector: return clause::METRIC_5_bivector_error<Real>({got[0], got[1], got[2]}, {want[0], want[1], want[2]});
@@ -133,6 +134,13 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
     case Measure::rigid: {
       const auto e = clause::METRIC_7_rigid_error(dq(got), dq(want));
       return max(e.rotation, e.translation);
+    }
+    case Measure::dual_parts: {
+      Real real(0), dual(0);
+      for (int i = 0; i < 4; ++i) real = max(real, Real(abs(got[i] - want[i])));
+      for (int i = 4; i < 8; ++i) dual += (got[i] - want[i]) * (got[i] - want[i]);
+      if (mpfr::isnan(real) || mpfr::isnan(dual)) return ref::ScalarTraits<Real>::nan();
+      return max(max(real, Real(sqrt(dual) / scale)), clause::METRIC_6_norm_defect(dq(got).real));
     }
     case Measure::unit_rigid: {
       const auto e = clause::METRIC_7_rigid_error(dq(got), dq(want));

@@ -36,7 +36,9 @@ const std::vector<std::pair<std::string, std::string>>& vocabulary() {
       {"Subnormal", "Components that are subnormal in the format: a naive |q|^2 underflows to 0 (EDGE-8)."},
       {"SubnormalAxis", "A subnormal vector part beside w = +-1: the axis v/|v| must come from a rescaled v (EDGE-8, LOG-1)."},
       {"NegativeZero", "Components equal to -0."},
-      {"NegativeReal", "Quaternions with w < 0 and a zero vector part, e.g. -1: the branch of the log (LOG-2)."},
+      {"NegativeReal", "Quaternions with w < 0 and a zero vector part, e.g. -1: the branch of the log (LOG-2); dual quaternions whose real part is -1 (DQ-8's branch cut)."},
+      {"PureTranslation", "A dual vector without rotation part (xi_r = 0): its exponential is the translation by 2 xi_d, exactly (DQ-9)."},
+      {"LargeAngle", "A rotation part beyond a half turn of the rotor, |xi_r| in (pi, 3 pi): exp has no range restriction (DQ-9, as EXP-1)."},
       {"ZeroQuaternion", "A quaternion input equal to 0: outside the domain, DOMAIN_ERROR with NaN outputs (EDGE-6)."},
       {"ZeroRealPart", "A dual quaternion whose real part is 0: outside the domain (EDGE-6)."},
       {"ZeroAxis", "A rotation axis equal to 0 (AXANG-2, AXIS-1): no direction, outside the domain even for angle 0 (EDGE-6)."},
@@ -100,6 +102,9 @@ std::vector<std::string> flags_for_label(const std::string& label) {
   else if (label == "subnormal vector part, scalar part +-1") f = {"Subnormal", "NegativeZero", "SubnormalAxis"};
   else if (label == "negative real quaternion") f = {"NegativeReal"};
   else if (label == "-1 with -0 components") f = {"NegativeZero", "NegativeReal"};
+  else if (label == "real part -1, no translation" || label == "real part -1 (the branch cut)") f = {"NegativeReal"};
+  else if (label == "pure translation (xi_r = 0)") f = {"PureTranslation"};
+  else if (label == "|xi_r| in (pi, 3 pi)") f = {"LargeAngle"};
   else if (starts_with(label, "zero quaternion in ")) f = {"ZeroQuaternion"};
   else if (starts_with(label, "quaternion of +-0 in ")) f = {"NegativeZero", "ZeroQuaternion"};
   else if (starts_with(label, "zero real part in ")) f = {"ZeroRealPart"};
@@ -109,7 +114,7 @@ std::vector<std::string> flags_for_label(const std::string& label) {
   else if (starts_with(label, "+Inf in ") || starts_with(label, "-Inf in ")) f = {"Infinity"};
   else if (label == "reflection (det < 0)") f = {"Reflection"};
   else if (label == "perturbed rotation") f = {"NonOrthogonalMatrix"};
-  else if (label == "dual part not orthogonal to the real part") f = {"NonUnit"};  // DQ-7: DQ-4 repairs it
+  else if (label == "dual part not orthogonal to the real part") f = {"NonUnit"};  // DQ-7, DQ-8: DQ-4 repairs it
   else if (label == "negative weight") f = {"DegenerateWeights", "NegativeWeight"};
   else if (label == "NaN weight") f = {"NaN", "DegenerateWeights"};
   else if (label == "+Inf weight") f = {"Infinity", "DegenerateWeights"};

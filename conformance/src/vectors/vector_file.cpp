@@ -37,6 +37,7 @@ const char* measure_name(engine::Measure m) {
     case Measure::scalar: return "scalar";
     case Measure::rigid: return "rigid";
     case Measure::unit_rigid: return "unit_rigid";
+    case Measure::dual_parts: return "dual_parts";
   }
   return "scalar";
 }
@@ -58,6 +59,7 @@ const char* measure_doc(engine::Measure m) {
     case Measure::scalar: return "relative error, absolute when the expected value is 0";
     case Measure::rigid: return "METRIC-7: max(METRIC-1 of the real parts, |t - t_ref| / max(1, |t_ref|)) after DQ-4 normalisation";
     case Measure::unit_rigid: return "METRIC-7, METRIC-6 of the real part and the orthogonality defect |r.d| / max(1, |t_ref|): a dual quaternion that must be unit";
+    case Measure::dual_parts: return "max(max_i |r_i - r_ref_i|, |d - d_ref| / max(1, |xi_d|), METRIC-6 of r): a unit dual quaternion with a definite sign, its dual part relative to the size of the input's dual part (DQ-9)";
   }
   return "";
 }
@@ -69,12 +71,13 @@ std::string layout(const std::string& op, const engine::Array& a) {
     case 4: s = "quaternion [x, y, z, w]"; break;
     case 8: s = "dual quaternion [real x, y, z, w, dual x, y, z, w], dual = 1/2 t real"; break;
     case 9: s = "3x3 rotation matrix, column-major m[c*3 + r]"; break;
+    case 6: s = "dual vector [xi_r x, y, z, xi_d x, y, z]: the log of a unit dual quaternion (DQ-8)"; break;
     case 3:
       if ((op == "apply_bivector" && (a.name == "b" || a.name == "out_b"))) s = "bivector [e23, e31, e12]";
       else if ((op == "exp" && a.name == "v") || ((op == "log" || op == kRoundTripOp) && a.name == "out_v"))
         s = "rotation log [x, y, z] = (angle/2) axis";
       else if (a.name == "axis" || a.name == "u" || a.name == "out_axis") s = "axis [x, y, z]";
-      else if (a.name == "t" || a.name == "out_t") s = "translation [x, y, z]";
+      else if (a.name == "t" || a.name == "ta" || a.name == "tb" || a.name == "out_t") s = "translation [x, y, z]";
       else s = "vector / point [x, y, z]";
       break;
     default:

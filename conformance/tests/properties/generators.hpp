@@ -255,8 +255,18 @@ inline Case ordinary(const engine::AbiOp& op, std::size_t k = 0) {
   if (n == "normalize" || n == "inverse" || n == "to_matrix" || n == "to_axis_angle" || n == "log" ||
       n == "to_angle" || n == "to_axis" || n == "sqrt") {
     c.inputs = {q()};
-  } else if (n == "dq_to_rotation_translation") {
+  } else if (n == "dq_to_rotation_translation" || n == "dq_log") {
     c.inputs = {flat(rigid(-1, 3))};
+  } else if (n == "dq_exp") {
+    std::vector<Real> xi = vec(-2, 1);  // any |xi_r| up to 10 (DQ-9, as EXP-1)
+    append(xi, vec(-1, 3));
+    c.inputs = {xi};
+  } else if (n == "rigid_compose") {
+    c.inputs = {q(), vec(-1, 3), q(), vec(-1, 3)};
+  } else if (n == "rigid_apply") {
+    c.inputs = {q(), vec(-1, 3), vec(-1, 3)};
+  } else if (n == "rigid_inverse") {
+    c.inputs = {q(), vec(-1, 3)};
   } else if (n == "compose") {
     c.inputs = {q(), q()};
   } else if (n == "apply_vector" || n == "apply_bivector") {
@@ -351,6 +361,7 @@ void set_rotations(const engine::AbiOp& op, Case& c, Make make) {
 /// rotate_about_axis: an angle; from_matrix: a matrix): set from the rotation angle and axis.
 inline void set_angle(const engine::AbiOp& op, Case& c, const Real& angle, const V3& axis) {
   if (op.name == "exp") c.inputs[0] = flat(scaled(axis, angle / Real(2)));
+  if (op.name == "dq_exp") put(c.inputs[0], 0, flat(scaled(axis, angle / Real(2))));  // xi_r; xi_d kept
   if (op.name == "from_axis_angle") c.inputs = {{angle}, flat(axis)};
   if (op.name == "rotate_about_axis") c.inputs[2] = {angle};
   if (op.name == "from_matrix") {
@@ -466,6 +477,7 @@ inline Case draw(const engine::AbiOp& op, Family family, ref::Format f) {
           put(c.inputs[a], j, {Real(0), Real(0), Real(0), Real(1), Real(0), Real(0), Real(0), Real(0)});
       set_angle(op, c, Real(0), direction());
       if (n == "exp") c.inputs[0] = {Real(0), Real(0), Real(0)};
+      if (n == "dq_exp") c.inputs[0] = std::vector<Real>(6, Real(0));  // the identity motion's log
       if (t_array(op) < c.inputs.size()) c.inputs[t_array(op)] = {t_in(-1, 2)};  // "for every finite t"
       break;
     }

@@ -245,6 +245,11 @@ TEST(Properties, AXANG_3) { RC_CLAUSE("AXANG-3"); check_clause("AXANG-3"); }
 TEST(Properties, AXANG_4) { RC_CLAUSE("AXANG-4"); check_clause("AXANG-4"); }
 TEST(Properties, SQRT_1) { RC_CLAUSE("SQRT-1"); check_clause("SQRT-1"); }
 TEST(Properties, DQ_7) { RC_CLAUSE("DQ-7"); check_clause("DQ-7"); }
+TEST(Properties, DQ_8) { RC_CLAUSE("DQ-8"); check_clause("DQ-8"); }
+TEST(Properties, DQ_9) { RC_CLAUSE("DQ-9"); check_clause("DQ-9"); }
+TEST(Properties, RIGID_1) { RC_CLAUSE("RIGID-1"); check_clause("RIGID-1"); }
+TEST(Properties, RIGID_2) { RC_CLAUSE("RIGID-2"); check_clause("RIGID-2"); }
+TEST(Properties, RIGID_3) { RC_CLAUSE("RIGID-3"); check_clause("RIGID-3"); }
 TEST(Properties, EDGE_1) { RC_CLAUSE("EDGE-1"); check_clause("EDGE-1"); }
 TEST(Properties, EDGE_2) { RC_CLAUSE("EDGE-2"); check_clause("EDGE-2"); }
 TEST(Properties, EDGE_3) { RC_CLAUSE("EDGE-3"); check_clause("EDGE-3"); }

@@ -16,7 +16,8 @@
 // Inputs are const references and come first, outputs are non-const references; scalars are
 // plain S. make_ops<Impl>() turns whatever subset is defined into the batched C table (a
 // missing function becomes a NULL pointer: NOT_SUPPORTED; make_ops3<Impl>() does the same for the
-// operations of ABI version 3: to_angle, to_axis, sqrt, dq_to_rotation_translation). An implementation that batches
+// operations of ABI version 3: to_angle, to_axis, sqrt, dq_to_rotation_translation, and make_ops4 for
+// those of version 4: dq_log, dq_exp, rigid_compose, rigid_apply, rigid_inverse). An implementation that batches
 // itself (SIMD) defines `static int NAME_batch(...)` with the C signature instead, and that is
 // used as is.
 #pragma once
@@ -73,6 +74,10 @@ template <class S> struct Ops3For;
 template <> struct Ops3For<float> { using type = rc_ops3_f32; };
 template <> struct Ops3For<double> { using type = rc_ops3_f64; };
 template <class S> using Ops3 = typename Ops3For<S>::type;  // the ABI version 3 operations
+template <class S> struct Ops4For;
+template <> struct Ops4For<float> { using type = rc_ops4_f32; };
+template <> struct Ops4For<double> { using type = rc_ops4_f64; };
+template <class S> using Ops4 = typename Ops4For<S>::type;  // the ABI version 4 operations
 
 namespace detail {
 
@@ -265,6 +270,18 @@ Ops3<typename Impl::Scalar> make_ops3() {
   ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_axis)
   ROTORCERT_OP_ELEMENTWISE(ops, Impl, sqrt)
   ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_to_rotation_translation)
+  return ops;
+}
+
+/// The batched C table of the ABI version 4 operations of an implementation struct.
+template <class Impl>
+Ops4<typename Impl::Scalar> make_ops4() {
+  Ops4<typename Impl::Scalar> ops{};
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_log)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_exp)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rigid_compose)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rigid_apply)
+  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rigid_inverse)
   return ops;
 }
 

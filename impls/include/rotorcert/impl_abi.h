@@ -1,4 +1,4 @@
-/* rotorcert implementation ABI, version 3 (version 1 and 2 tables still load: see below).
+/* rotorcert implementation ABI, version 4 (version 1, 2 and 3 tables still load: see below).
  *
  * An implementation under test (built in, or a third-party plugin loaded with dlopen) exports
  * one C entry point:
@@ -12,10 +12,11 @@
  * Versions: a version-2 table is a version-1 table with two fields appended (preconditions and
  * conventions, the declarations of spec clause DECL-1); a version-3 table is a version-2 table
  * with two more appended (f32_v3, f64_v3: the operations added in version 3, in a struct of their
- * own so that rc_ops_f32/f64 keep their version-1 layout). The suite asks for version 3 first,
- * then 2, then 1, taking the first version at which the library answers a table at index 0; it
- * reads the appended fields only from a table whose abi_version is at least the version that
- * added them (a version-1 or version-2 table simply lacks the newer operations: NOT_SUPPORTED).
+ * own so that rc_ops_f32/f64 keep their version-1 layout); a version-4 table appends f32_v4 and
+ * f64_v4 the same way. The suite asks for version 4 first, then 3, 2, 1, taking the first version
+ * at which the library answers a table at index 0; it reads the appended fields only from a table
+ * whose abi_version is at least the version that added them (an older table simply lacks the
+ * newer operations: NOT_SUPPORTED).
  * A library built against this header answers every version from RC_ABI_VERSION_MIN to
  * RC_ABI_VERSION (an older host reads the prefix of its own version).
  *
@@ -55,7 +56,7 @@
 extern "C" {
 #endif
 
-#define RC_ABI_VERSION 3u
+#define RC_ABI_VERSION 4u
 #define RC_ABI_VERSION_MIN 1u /* the oldest version the suite still loads */
 
 /* Element status (RESULT-2). */
@@ -133,6 +134,26 @@ RC_DECLARE_OPS(rc_ops_f64, double);
 RC_DECLARE_OPS3(rc_ops3_f32, float);
 RC_DECLARE_OPS3(rc_ops3_f64, double);
 
+/* The operations added in ABI version 4, same conventions. Read only from a table whose
+ * abi_version is >= 4. Layouts (LAYOUT-1): a dual vector xi = xi_r + eps xi_d, the logarithm of a
+ * unit dual quaternion, is 6 scalars [xi_r x, y, z, xi_d x, y, z]; a rigid transform as rotation +
+ * translation is a quaternion q [x, y, z, w] (the rotation of q/|q|) and a vector t [x, y, z]
+ * (x -> R x + t). */
+#define RC_DECLARE_OPS4(NAME, S)                                                                             \
+  typedef struct NAME {                                                                                      \
+    /* Rigid: the motor logarithm and exponential in dual-quaternion coordinates */                         \
+    int (*dq_log)(size_t n, const S* d, S* out_xi, uint8_t* status);                  /* DQ-8 */           \
+    int (*dq_exp)(size_t n, const S* xi, S* out_d, uint8_t* status);                  /* DQ-9 */           \
+    /* Rigid transforms held as rotation quaternion + translation (Isometry3, btTransform, ...) */          \
+    int (*rigid_compose)(size_t n, const S* qa, const S* ta, const S* qb, const S* tb, S* out_q, S* out_t,  \
+                         uint8_t* status);                                            /* RIGID-1 */        \
+    int (*rigid_apply)(size_t n, const S* q, const S* t, const S* p, S* out_p, uint8_t* status); /* RIGID-2 */ \
+    int (*rigid_inverse)(size_t n, const S* q, const S* t, S* out_q, S* out_t, uint8_t* status); /* RIGID-3 */ \
+  } NAME
+
+RC_DECLARE_OPS4(rc_ops4_f32, float);
+RC_DECLARE_OPS4(rc_ops4_f64, double);
+
 /* One implementation for one scalar type. */
 typedef struct rc_impl {
   uint32_t abi_version;       /* RC_ABI_VERSION the table was built against */
@@ -167,6 +188,10 @@ typedef struct rc_impl {
    * (f32_v3 for RC_SCALAR_FLOAT32, f64_v3 for RC_SCALAR_FLOAT64); NULL means none of them. */
   const rc_ops3_f32* f32_v3;
   const rc_ops3_f64* f64_v3;
+  /* ---- ABI version 4 ---- */
+  /* The version-4 operations, same rule as f32_v3 / f64_v3. */
+  const rc_ops4_f32* f32_v4;
+  const rc_ops4_f64* f64_v4;
 } rc_impl;
 
 /* The entry point every implementation library exports. */

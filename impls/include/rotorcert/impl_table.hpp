@@ -8,8 +8,9 @@
 // and optionally the SIMD dispatch hooks simd_targets / select_target / current_target, and the
 // declarations of ABI version 2 (DECL-1), each a NULL-terminated array of "op:id" strings:
 //   static constexpr const char* const preconditions[], conventions[];
-// The operations of ABI version 3 (to_angle, to_axis, sqrt, dq_to_rotation_translation) are element
-// functions like the others; table() puts them in f32_v3 / f64_v3.
+// The operations of ABI version 3 (to_angle, to_axis, sqrt, dq_to_rotation_translation) and 4
+// (dq_log, dq_exp, rigid_compose, rigid_apply, rigid_inverse) are element functions like the others;
+// table() puts them in f32_v3 / f64_v3 and f32_v4 / f64_v4.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +24,7 @@ const rc_impl* table(std::uint32_t abi_version = RC_ABI_VERSION) {
   using S = typename Impl::Scalar;
   static const Ops<S> ops = make_ops<Impl>();
   static const Ops3<S> ops3 = make_ops3<Impl>();
+  static const Ops4<S> ops4 = make_ops4<Impl>();
   static const rc_impl t = [] {
     rc_impl r{};
     r.abi_version = RC_ABI_VERSION;
@@ -35,10 +37,12 @@ const rc_impl* table(std::uint32_t abi_version = RC_ABI_VERSION) {
       r.scalar = RC_SCALAR_FLOAT32;
       r.f32 = &ops;
       r.f32_v3 = &ops3;
+      r.f32_v4 = &ops4;
     } else {
       r.scalar = RC_SCALAR_FLOAT64;
       r.f64 = &ops;
       r.f64_v3 = &ops3;
+      r.f64_v4 = &ops4;
     }
     if constexpr (requires { Impl::simd_targets; }) {
       r.simd_targets = Impl::simd_targets;
@@ -52,6 +56,11 @@ const rc_impl* table(std::uint32_t abi_version = RC_ABI_VERSION) {
   // An older host gets the same table stamped with the version it asked for: it reads the prefix
   // of that version (the appended fields are there, unread), and a host that checks the stamp
   // against its own RC_ABI_VERSION accepts it.
+  static const rc_impl v3 = [] {
+    rc_impl r = t;
+    r.abi_version = 3;
+    return r;
+  }();
   static const rc_impl v2 = [] {
     rc_impl r = t;
     r.abi_version = 2;
@@ -62,7 +71,7 @@ const rc_impl* table(std::uint32_t abi_version = RC_ABI_VERSION) {
     r.abi_version = 1;
     return r;
   }();
-  return abi_version >= 3 ? &t : abi_version == 2 ? &v2 : &v1;
+  return abi_version >= 4 ? &t : abi_version == 3 ? &v3 : abi_version == 2 ? &v2 : &v1;
 }
 
 /// The body of an entry point: the index-th of the given implementation structs. A newer table is

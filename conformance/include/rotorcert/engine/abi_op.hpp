@@ -28,7 +28,8 @@ enum class Measure {
   canonical_rotation,  // from_matrix (MAT-2): unit_rotation, and the canonical sign (w > 0) once
                        // the reference |w| is above the bar: a wrong sign costs |w_ref|
   vector,         // METRIC-3, relative to |reference|
-  point,          // |p - p_ref| / max(1, |inputs|): rigid operations (DQ-3, AXIS-1, SKIN-*)
+  point,          // |p - p_ref| / AbiOp::scale (max(1, |inputs|)): rigid operations (DQ-3, AXIS-1,
+                  // SKIN-*, RIGID-*), over every component (DQ-8's 6-scalar dual vector)
   bivector,       // METRIC-5, radians (logs)
   matrix,         // METRIC-4
   angle,          // absolute radians
@@ -36,6 +37,9 @@ enum class Measure {
   rigid,          // dual quaternion: METRIC-7, rotation and translation
   unit_rigid,     // dual quaternion that must be unit (DQ-4): METRIC-7, METRIC-6 of the real part,
                   // and the orthogonality defect |r.d| / max(1, |t_ref|)
+  dual_parts,     // dual quaternion with a definite sign, part by part (DQ-9): max_i |r_i - r_ref_i|
+                  // (absolute: r is unit), |d - d_ref| / AbiOp::scale (the size of the input's dual
+                  // part, whose rounding the output carries) and METRIC-6 of r
 };
 
 struct Array {
@@ -64,7 +68,9 @@ struct AbiOp {
 };
 
 /// Every op of the ABI: those of rc_ops (v1) in their order, then those of rc_ops3 (v3: to_angle,
-/// to_axis, sqrt, dq_to_rotation_translation), which a table of abi_version < 3 never supports.
+/// to_axis, sqrt, dq_to_rotation_translation), which a table of abi_version < 3 never supports,
+/// then those of rc_ops4 (v4: dq_log, dq_exp, rigid_compose, rigid_apply, rigid_inverse), which a
+/// table of abi_version < 4 never supports.
 const std::vector<AbiOp>& abi_ops();
 /// The op of that name, or nullptr.
 const AbiOp* find_abi_op(const std::string& name);

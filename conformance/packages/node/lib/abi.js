@@ -18,6 +18,9 @@ const OUTPUTS = Object.freeze({
   // ABI version 3
   to_angle: [['out_angle', 1]], to_axis: [['out_axis', 3]], sqrt: [['out_q', 4]],
   dq_to_rotation_translation: [['out_q', 4], ['out_t', 3]],
+  // ABI version 4
+  dq_log: [['out_xi', 6]], dq_exp: [['out_d', 8]],
+  rigid_compose: [['out_q', 4], ['out_t', 3]], rigid_apply: [['out_p', 3]], rigid_inverse: [['out_q', 4], ['out_t', 3]],
   log_exp_round_trip: [['out_q', 4]],
 });
 

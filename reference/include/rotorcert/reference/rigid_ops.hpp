@@ -266,6 +266,117 @@ Result<DualQuaternion<T>> DQ_6_dlb(std::span<const DualQuaternion<T>> d, std::sp
   return {rigid::dlb(d, w), Status::ok};
 }
 
+}  // namespace rotorcert::ref::clause
+
+namespace rotorcert::ref {
+
+/// The pure dual quaternion xi = xi_r + eps xi_d (two 3-vectors, the quaternion view of the motor's
+/// bivector: MOTOR-1 maps it to -(xi_r on e23, e31, e12) - (xi_d on e01, e02, e03)). DQ-8, DQ-9.
+template <class T>
+struct DualVector {
+  Vec3<T> real, dual;
+};
+template <class T> void poison(DualVector<T>& v) { poison(v.real); poison(v.dual); }
+
+/// A rigid transform x -> R x + t held as a rotation quaternion q (R of q/|q|) and a translation t.
+/// RIGID-1 .. RIGID-3.
+template <class T>
+struct RotationTranslation {
+  Quaternion<T> q;
+  Vec3<T> t;
+};
+template <class T> void poison(RotationTranslation<T>& r) { poison(r.q); poison(r.t); }
+
+}  // namespace rotorcert::ref
+
+namespace rotorcert::ref::clause {
+
+// ---- logarithm and exponential of unit dual quaternions (DQ-8, DQ-9) --------------------------
+
+
+/// DQ-9: exp(xi_r + eps xi_d) = exp(xi_r) + eps Dexp(xi_r)[xi_d] (a dual-number function: the
+/// power series of (a + eps b)^n is a^n + eps sum a^k b a^(n-1-k), the derivative of x^n). With
+/// b = |xi_r|, n = xi_r / b, a = xi_d . n and xi_perp = xi_d - a n:
+///   real = (cos b, sin b n),   dual = (-a sin b, a cos b n + (sin b / b) xi_perp);
+/// b = 0: (1, (0, xi_d)) (a translation by 2 xi_d). The result is unit: real . dual = 0.
+template <class T>
+Result<DualQuaternion<T>> DQ_9_exp(const DualVector<T>& xi) {
+  using std::cos;
+  using std::sin;
+  if (!finite(xi.real) || !finite(xi.dual)) return domain_error<DualQuaternion<T>>();
+  const T b = pga::norm3(xi.real);
+  if (b == 0) return {{Quaternion<T>::identity(), rigid::pure(xi.dual)}, Status::ok};
+  const Vec3<T> n = pga::divided3(xi.real, b);
+  const T a = pga::dot3(xi.dual, n);
+  const Vec3<T> perp = pga::minus3(xi.dual, pga::scaled3(a, n));
+  const T c = cos(b), s = sin(b), sinc = s / b;
+  return {{{c, s * n[0], s * n[1], s * n[2]},
+           {-a * s, a * c * n[0] + sinc * perp[0], a * c * n[1] + sinc * perp[1], a * c * n[2] + sinc * perp[2]}},
+          Status::ok};
+}
+
+/// DQ-8: the principal logarithm of DQ-4(sigma), the inverse of DQ-9. With (r, d) = DQ-4(sigma),
+/// r = (cos b, sin b n) and b = atan2(|r_v|, r_w) in [0, pi] (LOG-1's branch: no hemisphere flip):
+///   xi_r = b n,   xi_d = a n + (b / sin b) d_perp,   a = (d_v . n) cos b - d_w sin b,
+/// d_perp = d_v - (d_v . n) n (DQ-9 solved for xi_d; a is the combination of d_w = -a sin b and
+/// d_v . n = a cos b that never divides by sin b). b = 0: xi = (0, d_v). The branch cut r = -1
+/// (b = pi; then d_w = 0 and t = -2 d_v): only the part of xi_d along n is determined, and n must
+/// be +-t/|t|; the spec's choice is xi = (pi t/|t|, t/2), and (pi (0, 0, 1), 0) for t = 0 (LOG-2).
+template <class T>
+Result<DualVector<T>> DQ_8_log(const DualQuaternion<T>& sigma) {
+  using std::atan2;
+  if (!rigid::valid(sigma)) return domain_error<DualVector<T>>();
+  const DualQuaternion<T> u = rigid::normalized(sigma);
+  const Vec3<T> rv = rigid::vector_part(u.real), dv = rigid::vector_part(u.dual);
+  const T s = pga::norm3(rv);
+  if (s == 0 && u.real.w > 0) return {{{T(0), T(0), T(0)}, dv}, Status::ok};
+  if (s == 0) {  // r = -1
+    const Vec3<T> t = rigid::translation_of_unit(u);
+    const T len = pga::norm3(t);
+    const T pi = ScalarTraits<T>::pi();
+    if (len == 0) return {{{T(0), T(0), pi}, {T(0), T(0), T(0)}}, Status::ok};
+    return {{pga::scaled3(pi / len, t), pga::scaled3(T(1) / T(2), t)}, Status::ok};
+  }
+  const T b = atan2(s, u.real.w);
+  const Vec3<T> n = pga::divided3(rv, s);
+  const T along = pga::dot3(dv, n);
+  const T a = along * u.real.w - u.dual.w * s;  // cos b = r_w, sin b = |r_v| on the unit r
+  const Vec3<T> perp = pga::minus3(dv, pga::scaled3(along, n));
+  const T k = b / s;
+  return {{pga::scaled3(b, n), {a * n[0] + k * perp[0], a * n[1] + k * perp[1], a * n[2] + k * perp[2]}}, Status::ok};
+}
+
+// ---- rigid transforms as rotation + translation (RIGID-1 .. RIGID-3) ----------------------------
+
+
+/// RIGID-1: (q_a, t_a) o (q_b, t_b) = (q^_a q^_b, R_a t_b + t_a): apply b first (as DQ-2).
+template <class T>
+Result<RotationTranslation<T>> RIGID_1_compose(const Quaternion<T>& qa, const Vec3<T>& ta, const Quaternion<T>& qb,
+                                               const Vec3<T>& tb) {
+  if (!rigid::valid(qa) || !rigid::valid(qb) || !finite(ta) || !finite(tb)) return domain_error<RotationTranslation<T>>();
+  const Quaternion<T> ua = rigid::unit(qa), ub = rigid::unit(qb);
+  const Vec3<T> moved = rigid::vector_part(ua * rigid::pure(tb) * conj(ua));
+  return {{ua * ub, {moved[0] + ta[0], moved[1] + ta[1], moved[2] + ta[2]}}, Status::ok};
+}
+
+/// RIGID-2: p' = R p + t with R the rotation of q/|q| (the motion of DQ-3 for sigma = DQ-1(q, t)).
+template <class T>
+Result<Vec3<T>> RIGID_2_apply(const Quaternion<T>& q, const Vec3<T>& t, const Vec3<T>& p) {
+  if (!rigid::valid(q) || !finite(t) || !finite(p)) return domain_error<Vec3<T>>();
+  const Quaternion<T> u = rigid::unit(q);
+  const Vec3<T> rp = rigid::vector_part(u * rigid::pure(p) * conj(u));
+  return {{rp[0] + t[0], rp[1] + t[1], rp[2] + t[2]}, Status::ok};
+}
+
+/// RIGID-3: the inverse transform x -> R^-1 (x - t): (q^*, -R^-1 t).
+template <class T>
+Result<RotationTranslation<T>> RIGID_3_inverse(const Quaternion<T>& q, const Vec3<T>& t) {
+  if (!rigid::valid(q) || !finite(t)) return domain_error<RotationTranslation<T>>();
+  const Quaternion<T> inv = conj(rigid::unit(q));
+  const Vec3<T> back = rigid::vector_part(inv * rigid::pure(t) * conj(inv));
+  return {{inv, {-back[0], -back[1], -back[2]}}, Status::ok};
+}
+
 // ---- motors (in the algebra) ------------------------------------------------------------------
 
 /// MOTOR-1: M = w_r - x_r e23 - y_r e31 - z_r e12 - x_d e01 - y_d e02 - z_d e03 - w_d e0123,
