@@ -269,16 +269,24 @@ const S* cin(const std::vector<const void*>& in, std::size_t i) { return static_
 template <class S>
 S* cout(const std::vector<void*>& out, std::size_t i) { return static_cast<S*>(out.at(i)); }
 
+// One table slot, in whichever of the structs rc_ops_*, rc_ops3_*, rc_ops4_* has it: -1 when the
+// struct lacks it or it is NULL (NOT_SUPPORTED), 0 when only probing, else the call. The slot is
+// parenthesised so that a slot named like a function-like macro (sqrt under <tgmath.h>) works.
+#define RC_CALL(slot, ...)                                \
+  if constexpr (requires { o.slot; }) {                   \
+    if (op == #slot) {                                    \
+      if (o.slot == nullptr) return -1;                   \
+      return probe_only ? 0 : (o.slot)(__VA_ARGS__);      \
+    }                                                     \
+  }
+
 template <class S, class Ops>
 int call_ops(const Ops& o, const std::string& op, std::size_t n, std::size_t k, const std::vector<const void*>& in,
              const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
   auto I = [&](std::size_t i) { return cin<S>(in, i); };
   auto O = [&](std::size_t i) { return cout<S>(out, i); };
-#define RC_CALL(slot, ...)                  \
-  if (op == #slot) {                        \
-    if (o.slot == nullptr) return -1;       \
-    return probe_only ? 0 : o.slot(__VA_ARGS__); \
-  }
+  [[maybe_unused]] const std::size_t influences = k;
+  // ABI version 1 (rc_ops_*)
   RC_CALL(normalize, n, I(0), O(0), st)
   RC_CALL(compose, n, I(0), I(1), O(0), st)
   RC_CALL(inverse, n, I(0), O(0), st)
@@ -293,89 +301,53 @@ int call_ops(const Ops& o, const std::string& op, std::size_t n, std::size_t k, 
   RC_CALL(exp, n, I(0), O(0), st)
   RC_CALL(slerp, n, I(0), I(1), I(2), O(0), st)
   RC_CALL(nlerp, n, I(0), I(1), I(2), O(0), st)
-  RC_CALL(blend_qlb, n, k, I(0), I(1), O(0), st)
-  RC_CALL(blend_log, n, k, I(0), I(1), O(0), st)
+  RC_CALL(blend_qlb, n, influences, I(0), I(1), O(0), st)
+  RC_CALL(blend_log, n, influences, I(0), I(1), O(0), st)
   RC_CALL(dq_from_rotation_translation, n, I(0), I(1), O(0), st)
   RC_CALL(dq_compose, n, I(0), I(1), O(0), st)
   RC_CALL(dq_apply_point, n, I(0), I(1), O(0), st)
   RC_CALL(dq_normalize, n, I(0), O(0), st)
   RC_CALL(dq_sclerp, n, I(0), I(1), I(2), O(0), st)
-  RC_CALL(dq_blend, n, k, I(0), I(1), O(0), st)
+  RC_CALL(dq_blend, n, influences, I(0), I(1), O(0), st)
   RC_CALL(rotate_about_axis, n, I(0), I(1), I(2), I(3), O(0), st)
-  RC_CALL(skin_linear, n, k, I(0), I(1), I(2), I(3), O(0), st)
-  RC_CALL(skin_dual_quaternion, n, k, I(0), I(1), I(2), I(3), O(0), st)
-#undef RC_CALL
-  return -1;
-}
-
-/// The operations of ABI version 3 (rc_ops3_*), same conventions as call_ops.
-template <class S, class Ops3>
-int call_ops3(const Ops3& o, const std::string& op, std::size_t n, const std::vector<const void*>& in,
-              const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
-  auto I = [&](std::size_t i) { return cin<S>(in, i); };
-  auto O = [&](std::size_t i) { return cout<S>(out, i); };
-#define RC_CALL(slot, ...)                       \
-  if (op == #slot) {                             \
-    if (o.slot == nullptr) return -1;            \
-    return probe_only ? 0 : (o.slot)(__VA_ARGS__); \
-  }
+  RC_CALL(skin_linear, n, influences, I(0), I(1), I(2), I(3), O(0), st)
+  RC_CALL(skin_dual_quaternion, n, influences, I(0), I(1), I(2), I(3), O(0), st)
+  // ABI version 3 (rc_ops3_*)
   RC_CALL(to_angle, n, I(0), O(0), st)
   RC_CALL(to_axis, n, I(0), O(0), st)
   RC_CALL(sqrt, n, I(0), O(0), st)
   RC_CALL(dq_to_rotation_translation, n, I(0), O(0), O(1), st)
-#undef RC_CALL
-  return -1;
-}
-
-/// Whether op is one of ABI version 3 (rc_ops3_*).
-bool is_v3_op(const std::string& op) {
-  return op == "to_angle" || op == "to_axis" || op == "sqrt" || op == "dq_to_rotation_translation";
-}
-
-/// The operations of ABI version 4 (rc_ops4_*), same conventions as call_ops.
-template <class S, class Ops4>
-int call_ops4(const Ops4& o, const std::string& op, std::size_t n, const std::vector<const void*>& in,
-              const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
-  auto I = [&](std::size_t i) { return cin<S>(in, i); };
-  auto O = [&](std::size_t i) { return cout<S>(out, i); };
-#define RC_CALL(slot, ...)                         \
-  if (op == #slot) {                               \
-    if (o.slot == nullptr) return -1;              \
-    return probe_only ? 0 : (o.slot)(__VA_ARGS__); \
-  }
+  // ABI version 4 (rc_ops4_*)
   RC_CALL(dq_log, n, I(0), O(0), st)
   RC_CALL(dq_exp, n, I(0), O(0), st)
   RC_CALL(rigid_compose, n, I(0), I(1), I(2), I(3), O(0), O(1), st)
   RC_CALL(rigid_apply, n, I(0), I(1), I(2), O(0), st)
   RC_CALL(rigid_inverse, n, I(0), I(1), O(0), O(1), st)
-#undef RC_CALL
   return -1;
 }
 
-/// Whether op is one of ABI version 4 (rc_ops4_*).
-bool is_v4_op(const std::string& op) {
-  return op == "dq_log" || op == "dq_exp" || op == "rigid_compose" || op == "rigid_apply" || op == "rigid_inverse";
-}
+#undef RC_CALL
 
-/// Calls (or probes) op through the part of the table that holds it: a version-3 op only through
-/// f32_v3 / f64_v3 of a table whose abi_version is >= 3 (an older table's memory ends before them).
+/// Calls (or probes) op through the part of the table that holds it. Each op lives in exactly one
+/// of the structs, so they are tried in turn; an appended struct is read only from a table whose
+/// abi_version is at least the one that added it (an older table's memory ends before it).
 int dispatch(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
              const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status, bool probe) {
-  if (is_v4_op(op)) {
-    if (table.abi_version < 4) return -1;
-    if (table.scalar == RC_SCALAR_FLOAT32 && table.f32_v4) return call_ops4<float>(*table.f32_v4, op, n, in, out, status, probe);
-    if (table.scalar == RC_SCALAR_FLOAT64 && table.f64_v4) return call_ops4<double>(*table.f64_v4, op, n, in, out, status, probe);
-    return -1;
+  auto from = [&]<class S>(const auto* ops, std::uint32_t since) {
+    return ops != nullptr && table.abi_version >= since ? call_ops<S>(*ops, op, n, k, in, out, status, probe) : -1;
+  };
+  int r = -1;
+  if (table.scalar == RC_SCALAR_FLOAT32) {
+    if ((r = from.template operator()<float>(table.f32, 1)) != -1) return r;
+    if ((r = from.template operator()<float>(table.f32_v3, 3)) != -1) return r;
+    return from.template operator()<float>(table.f32_v4, 4);
   }
-  if (is_v3_op(op)) {
-    if (table.abi_version < 3) return -1;
-    if (table.scalar == RC_SCALAR_FLOAT32 && table.f32_v3) return call_ops3<float>(*table.f32_v3, op, n, in, out, status, probe);
-    if (table.scalar == RC_SCALAR_FLOAT64 && table.f64_v3) return call_ops3<double>(*table.f64_v3, op, n, in, out, status, probe);
-    return -1;
+  if (table.scalar == RC_SCALAR_FLOAT64) {
+    if ((r = from.template operator()<double>(table.f64, 1)) != -1) return r;
+    if ((r = from.template operator()<double>(table.f64_v3, 3)) != -1) return r;
+    return from.template operator()<double>(table.f64_v4, 4);
   }
-  if (table.scalar == RC_SCALAR_FLOAT32 && table.f32) return call_ops<float>(*table.f32, op, n, k, in, out, status, probe);
-  if (table.scalar == RC_SCALAR_FLOAT64 && table.f64) return call_ops<double>(*table.f64, op, n, k, in, out, status, probe);
-  return -1;
+  return r;
 }
 
 }  // namespace
