@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include <rotorcert/certify/platform.hpp>
 #include <rotorcert/certify/wire.hpp>
@@ -66,6 +68,24 @@ std::string run_clause_in_child(const spec::Spec& spec, const Target& target, co
     engine::detect_conventions(table, spec, clause, options.cases, r);
   }
   return json{{"result", to_json(r, true)}, {"fp_environment", environment}}.dump();
+}
+
+/// The result a child handed over (run_clause_in_child), checked field by field: it must be the
+/// result of `clause`, with a valid outcome and consistent counts, and an environment object.
+std::pair<ClauseResult, json> result_from_child(const std::string& text, const std::string& clause) {
+  const json child = json::parse(text);
+  if (!child.is_object()) throw std::runtime_error("not a JSON object");
+  ClauseResult r = clause_result_from_json(child.at("result"));
+  if (r.clause != clause) throw std::runtime_error("the result of clause \"" + r.clause.substr(0, 40) + "\"");
+  if (r.outcome == Outcome::crash || r.outcome == Outcome::timeout)
+    throw std::runtime_error(std::string("an outcome only the certify tool gives: ") + engine::to_string(r.outcome));
+  if (r.failures > r.cases) throw std::runtime_error("more failing inputs than inputs");
+  json environment = child.at("fp_environment");
+  if (!environment.is_object()) throw std::runtime_error("fp_environment is not an object");
+  for (const auto& [key, value] : environment.items())
+    if (!value.is_null() && !value.is_boolean() && !value.is_number() && !value.is_string())
+      throw std::runtime_error("fp_environment." + key.substr(0, 40) + " is not a plain value");
+  return {std::move(r), std::move(environment)};
 }
 
 void show_progress(const CertifyOptions& o, std::size_t done, std::size_t total, const std::string& what) {
@@ -177,10 +197,23 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
     const Job job = jobs[id];
     Certificate& c = certs[job.target];
     ClauseResult& slot = c.clauses[job.slot];
+    ClauseResult r;
+    json environment;
     if (out.kind == ChildOutcome::Kind::finished) {
-      const json child = json::parse(out.result);
-      ClauseResult r = clause_result_from_json(child.at("result"));
-      if (c.fp_environment.is_null()) c.fp_environment = child.at("fp_environment");
+      // The result comes from the process the implementation ran in: untrusted input. One that
+      // does not parse, or is not the result of the clause asked for, is a fault of the child.
+      try {
+        std::tie(r, environment) = result_from_child(out.result, job.clause);
+      } catch (const std::exception& e) {
+        out.kind = ChildOutcome::Kind::crashed;
+        std::string why = std::string(e.what()).substr(0, 300);
+        for (char& ch : why)  // the parser quotes what it read: keep the note plain ASCII
+          if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7F) ch = '?';
+        out.message = "handed over a malformed result (" + why + ")";
+      }
+    }
+    if (out.kind == ChildOutcome::Kind::finished) {
+      if (c.fp_environment.is_null()) c.fp_environment = std::move(environment);
       if (job.pinpoint) {
         // The crash or hang did not come back one case at a time: report the first run's.
         r = slot;
@@ -190,7 +223,7 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
     } else {
       const bool timeout = out.kind == ChildOutcome::Kind::timed_out;
       const ChildOutcome& first = job.pinpoint ? job.first : out;
-      ClauseResult r = slot;
+      r = slot;
       r.outcome = timeout || first.kind == ChildOutcome::Kind::timed_out ? Outcome::timeout : Outcome::crash;
       // Sanitizer builds run children without the limit (ChildPool::start): say so only where it applied.
       r.note = first.message + (r.outcome == Outcome::crash && pool.limits().memory_mb && !built_with_sanitizer()

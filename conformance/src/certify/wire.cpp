@@ -8,6 +8,19 @@ namespace {
 
 double double_or_nan(const json& j) { return j.is_number() ? j.get<double>() : NAN; }
 
+// A ClauseResult comes back from a child process, in which the implementation under test ran:
+// every field is checked for its type (nlohmann's at() and get() throw on a missing key or a
+// wrong type; a negative or fractional number would convert silently to a count).
+
+std::size_t count_of(const json& j) {
+  if (!j.is_number_unsigned()) throw std::runtime_error("a count that is not a non-negative integer: " + j.dump().substr(0, 40));
+  return j.get<std::size_t>();
+}
+std::size_t count_or_zero(const json& j, const char* key) {
+  const auto it = j.find(key);
+  return it == j.end() ? 0 : count_of(*it);
+}
+
 }  // namespace
 
 json to_json(const TableInfo& t) {
@@ -94,15 +107,15 @@ engine::ClauseResult clause_result_from_json(const json& j) {
   if (!engine::parse_outcome(j.at("outcome").get<std::string>(), r.outcome))
     throw std::runtime_error("unknown outcome code " + j.at("outcome").dump());
   r.note = j.value("note", "");
-  r.cases = j.value("cases", std::size_t{0});
-  r.failures = j.value("failures", std::size_t{0});
+  r.cases = count_or_zero(j, "cases");
+  r.failures = count_or_zero(j, "failures");
   r.conventions = j.value("conventions", std::vector<std::string>{});
   if (const auto d = j.find("diagnoses"); d != j.end())
     for (const json& x : *d)
-      r.diagnoses.push_back({x.at("convention"), x.at("explained"), x.at("failing"),
+      r.diagnoses.push_back({x.at("convention"), count_of(x.at("explained")), count_of(x.at("failing")),
                              x.at("unexplained").get<std::vector<std::string>>()});
   if (const auto st = j.find("status"); st != j.end() && st->is_object()) {
-    r.status_failures = st->at("failures");
+    r.status_failures = count_of(st->at("failures"));
     r.status_op = st->value("op", "");
     r.status_label = st->value("label", "");
     r.status_input = st->value("input", "");
@@ -110,10 +123,13 @@ engine::ClauseResult clause_result_from_json(const json& j) {
   }
   if (const auto a = j.find("acceptable"); a != j.end())
     for (const json& x : *a)
-      r.acceptable.push_back({x.at("convention"), x.value("declared", false), x.at("count"), x.value("op", ""),
+      r.acceptable.push_back({x.at("convention"), x.value("declared", false), count_of(x.at("count")), x.value("op", ""),
                               x.value("label", ""), x.value("input", ""), x.value("detail", "")});
-  if (const auto e = j.find("excluded"); e != j.end()) r.excluded = e->get<std::map<std::string, std::size_t>>();
-  r.searched = j.value("searched", std::size_t{0});
+  if (const auto e = j.find("excluded"); e != j.end()) {
+    if (!e->is_object()) throw std::runtime_error("excluded is not an object");
+    for (const auto& [precondition, n] : e->items()) r.excluded[precondition] = count_of(n);
+  }
+  r.searched = count_or_zero(j, "searched");
   if (const auto w = j.find("worst"); w != j.end() && w->is_object()) {
     r.worst_error = double_or_nan(w->at("error_eps"));
     r.worst_op = w->value("op", "");

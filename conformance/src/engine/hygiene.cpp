@@ -63,7 +63,7 @@ void inputs_unmodified(const rc_impl& table, const AbiOp& op, const std::vector<
                        ClauseJudge& judge) {
   const RawCall r = call_raw(table, op, pointers(cases), cases.front().k);
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    std::string changed;
+    std::string changed = r.fault.empty() ? "" : op.name + " " + r.fault;  // memory past the outputs
     for (std::size_t a = 0; a < op.inputs.size() && changed.empty(); ++a) {
       const auto before = r.input(op, a, i, cases[i].k, false), after = r.input(op, a, i, cases[i].k, true);
       bool same = before.size() == after.size();

@@ -33,14 +33,37 @@ struct Buffers {
     for (std::size_t a = 0; a < op.inputs.size(); ++a)
       for (const Case* c : cases)
         for (const Real& x : c->inputs[a]) in[a].push_back(static_cast<S>(to_native<S>(x)));
+    // Outputs start as a finite value no answer has, so that an output left unwritten fails (a 0
+    // would pass as the log of the identity); kGuard slots past every array stay so unless the
+    // implementation writes past the end (overrun()).
     out.assign(op.outputs.size(), {});
-    for (std::size_t a = 0; a < op.outputs.size(); ++a) out[a].assign(n * op.outputs[a].stride + 1, S(0));
-    status.assign(n + 1, 0xEE);  // a value no implementation writes: shows an element left untouched
+    for (std::size_t a = 0; a < op.outputs.size(); ++a) out[a].assign(n * op.outputs[a].stride + kGuard, unwritten());
+    status.assign(n + kGuard, kUnwrittenStatus);  // a value no implementation writes: shows an element left untouched
     in_ptrs.clear();
     out_ptrs.clear();
     for (auto& v : in) in_ptrs.push_back(v.empty() ? nullptr : v.data());
     for (auto& v : out) out_ptrs.push_back(v.data());
     (void)k;
+  }
+  static constexpr std::size_t kGuard = 16;
+  static constexpr std::uint8_t kUnwrittenStatus = 0xEE;
+  static S unwritten() { return S(-0x1.5p+100); }
+
+  /// Where the implementation wrote past the end of an output or the status array, or "".
+  std::string overrun(const AbiOp& op, std::size_t n) const {
+    for (std::size_t a = 0; a < op.outputs.size(); ++a) {
+      const std::size_t end = n * static_cast<std::size_t>(op.outputs[a].stride);
+      const S canary = unwritten();
+      for (std::size_t i = end; i < out[a].size(); ++i)
+        if (std::memcmp(&out[a][i], &canary, sizeof(S)) != 0)
+          return "wrote past the end of " + op.outputs[a].name + " (scalar " + std::to_string(i - end) +
+                 " after the last of " + std::to_string(n) + " elements)";
+    }
+    for (std::size_t i = n; i < status.size(); ++i)
+      if (status[i] != kUnwrittenStatus)
+        return "wrote past the end of the status array (byte " + std::to_string(i - n) + " after the last of " +
+               std::to_string(n) + " elements)";
+    return {};
   }
   template <class T>
   static T to_native(const Real& x) {
@@ -266,8 +289,10 @@ std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::
     Buffers<S> buf;
     buf.fill(op, cases, k);
     const int rc = call_in_environment(table, op, cases.size(), k, buf);
+    const std::string fault = buf.overrun(op, cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       result[i].call_rc = rc;
+      result[i].fault = fault;
       result[i].status = buf.status[i];
       for (std::size_t a = 0; a < op.outputs.size(); ++a) result[i].outputs.push_back(buf.output(op, a, i));
     }
@@ -290,6 +315,7 @@ RawCall call_raw(const rc_impl& table, const AbiOp& op, const std::vector<const 
     r.scalar_size = sizeof(S);
     for (const auto& v : buf.in) r.in_before.push_back(bytes(v));
     r.call_rc = call_in_environment(table, op, cases.size(), k, buf);
+    r.fault = buf.overrun(op, cases.size());
     for (const auto& v : buf.in) r.in_after.push_back(bytes(v));
     for (const auto& v : buf.out) r.out.push_back(bytes(v));
     r.status.assign(buf.status.begin(), buf.status.begin() + long(cases.size()));
@@ -342,6 +368,8 @@ CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, cons
   const AbiOp& op = *find_abi_op("log");
   if (log_got.call_rc != 0 || exp_got.call_rc != 0)
     return {ref::Verdict::fail, NAN, "the batch call returned " + std::to_string(log_got.call_rc ? log_got.call_rc : exp_got.call_rc)};
+  if (!log_got.fault.empty() || !exp_got.fault.empty())
+    return {ref::Verdict::fail, NAN, (log_got.fault.empty() ? "exp " + exp_got.fault : "log " + log_got.fault)};
   const std::vector<Real>& got = exp_got.outputs.at(0);
   const bool ok = log_got.status == RC_OK && exp_got.status == RC_OK;
   const Real e = ok ? clause::METRIC_1_rotation_distance(quat(got), quat(c.inputs[0])) / eps
@@ -377,6 +405,7 @@ CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Ca
     return v;
   };
   if (obs.call_rc != 0) return status_fail("the batch call returned " + std::to_string(obs.call_rc));
+  if (!obs.fault.empty()) return status_fail(obs.fault);
   const std::vector<std::vector<Real>>& got = obs.outputs;
   auto got_text = [&] {
     std::string s;

@@ -59,7 +59,7 @@ bool fails(const spec::Spec& spec, const Observations& o, ref::Format format, co
   const spec::ToleranceClass& tc = spec.lookup(o.file->tolerance);
   for (const auto& [v, got] : o.cases) {
     const engine::CaseVerdict verdict =
-        o.file->round_trip() ? engine::judge_round_trip(tc, v->input, engine::Observed{got.call_rc, got.status, {}}, got, format)
+        o.file->round_trip() ? engine::judge_round_trip(tc, v->input, engine::Observed{got.call_rc, got.status, {}, {}}, got, format)
                              : engine::judge_case(o.file->abi_op(), tc, v->input, got, format, convention);
     if (verdict.verdict == ref::Verdict::fail) return true;
   }
@@ -176,7 +176,7 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
             ++g.results;
             if (f->round_trip()) {
               // The results file reports the round trip as one status: OK iff log and exp both were.
-              const engine::Observed log_got{got.call_rc, got.status, {}};
+              const engine::Observed log_got{got.call_rc, got.status, {}, {}};
               judge.record(engine::judge_round_trip(tc, v->input, log_got, got, format), op, v->input, format);
             } else {
               judge.record(engine::judge_case(op, tc, v->input, got, format, nullptr, &declared), op, v->input, format);

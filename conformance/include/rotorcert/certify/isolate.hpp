@@ -41,8 +41,10 @@ struct ChildOutcome {
   double seconds = 0;
 };
 
-/// Runs up to `jobs` children at a time. Each task runs in its own child and returns its result
-/// as a string; whatever it prints to stdout or stderr passes through.
+/// Runs up to `jobs` children at a time. Each task runs in its own child (in a process group of its
+/// own, killed as a whole when it ends) and returns its result as a string over a dedicated pipe,
+/// in frames that carry a token of that child (RESULT-3); what it prints goes to the tool's stderr
+/// (the child's stdout is joined to it).
 class ChildPool {
  public:
   using Task = std::function<std::string(ChildChannel&)>;

@@ -38,6 +38,7 @@ bool parse_outcome(const std::string& code, Outcome& out);
 /// every output array and the status bytes after it, in the table's scalar type.
 struct RawCall {
   int call_rc = 0;
+  std::string fault;                                 // the batch wrote past the end of an array
   std::size_t scalar_size = 8;                       // sizeof(float) or sizeof(double)
   std::vector<std::vector<unsigned char>> in_before, in_after, out;
   std::vector<std::uint8_t> status;                  // one per element
@@ -55,6 +56,7 @@ struct Observed {
   int call_rc = 0;              // the batch call's return value; nonzero: the call as a whole failed
   std::uint8_t status = RC_OK;  // the element's status byte (RESULT-2)
   Values outputs;               // one vector per output array of the op, as exact values
+  std::string fault;            // the batch wrote past the end of an output or the status array
 };
 
 /// How a case was graded (ACC-1, DECL-1): by the spec's answer, under an acceptable convention,
