@@ -87,16 +87,18 @@ struct BulletTable {
       sizeof(S) == 4
           ? "Bullet 3.24 LinearMath (Debian 12, default build bullet.pc: btScalar = float) with no checks added. "
             "btQuaternion(x,y,z,w) = ABI order; Hamilton operator*; inverse() (the conjugate); quatRotate q v q* "
-            "(also for bivectors); btMatrix3x3 setRotation/getRotation row-major <-> column-major; getAngle/getAxis; "
-            "setRotation(axis, angle); slerp. Status: DOMAIN_ERROR iff every output is NaN."
+            "(also for bivectors); btMatrix3x3 setRotation/getRotation row-major <-> column-major; getAngle/getAxis "
+            "(together and apart); setRotation(axis, angle); slerp. Status: DOMAIN_ERROR iff every output is NaN."
           : "Bullet 3.24 LinearMath (Debian 12, bullet-float64.pc: -DBT_USE_DOUBLE_PRECISION, btScalar = double) with "
             "no checks added. btQuaternion(x,y,z,w) = ABI order; Hamilton operator*; inverse() (the conjugate); "
             "quatRotate q v q* (also for bivectors); btMatrix3x3 setRotation/getRotation row-major <-> column-major; "
-            "getAngle/getAxis; setRotation(axis, angle); slerp. Status: DOMAIN_ERROR iff every output is NaN.";
+            "getAngle/getAxis (together and apart); setRotation(axis, angle); slerp. Status: DOMAIN_ERROR iff every output is NaN.";
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       // Core (no APPLY-3: Bullet has no trivector)
       "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
+      // Extended (no SQRT-1: Bullet has no quaternion square root or power; no DQ-7: no dual quaternions)
+      "AXANG-3", "AXANG-4",
       // Interp (no LOG-*, EXP-*, NLERP-1: Bullet has none of them)
       "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5",
       // Robust (EDGE-9 judges weighted ops only; Bullet has none)
@@ -110,7 +112,8 @@ struct BulletTable {
   // is positive, else makes the component of the largest diagonal entry positive (s * 0.5) and
   // lets w take any sign; btQuaternion.h:490-491, getAxis returns (1, 0, 0) ("Arbitrary") where
   // 1 - w^2 < 10 SIMD_EPSILON, the identity's axis among them.
-  static constexpr const char* const conventions[] = {"from_matrix:sign", "to_axis_angle:identity_axis", nullptr};
+  static constexpr const char* const conventions[] = {"from_matrix:sign", "to_axis_angle:identity_axis",
+                                                      "to_axis:identity_axis", nullptr};
 
   // -- Core --
 
@@ -158,6 +161,17 @@ struct BulletTable {
     angle = b.getAngle();
     axis = from_bt(b.getAxis());
     return status_of(angle, axis);
+  }
+  // ABI version 3: getAngle() and getAxis() apart, as a Bullet user queries them (AXANG-3, AXANG-4);
+  // getAngleShortestPath() (:475) is the angle of the same rotation in [0, pi], a second to_angle
+  // that a table has no slot for: getAngle, the one to_axis_angle uses, is mapped.
+  static Status to_angle(const Quat<S>& q, S& angle) {
+    angle = to_bt(q).getAngle();
+    return status_of(angle);
+  }
+  static Status to_axis(const Quat<S>& q, Vec3<S>& axis) {
+    axis = from_bt(to_bt(q).getAxis());
+    return status_of(axis);
   }
   // btQuaternion.h:108: s = sin(angle/2) / |axis|, (s axis, cos(angle/2)).
   static Status from_axis_angle(const S& angle, const Vec3<S>& axis, Quat<S>& out) {

@@ -37,11 +37,15 @@ Op mapping (every call is clifford's; A, B, R rotors as above):
   slerp            clifford.tools.g3c.rotor_parameterisation.interpolate_rotors(Rb, Ra, t), with
                    Ra, Rb = clifford.tools.g3.quaternion_to_rotor(...) in clifford's conformal layout
                    (the library's only rotor interpolation: exp(t log(Rb ~Ra)) Ra)
+  sqrt             clifford.tools.g3c.square_roots_of_rotor(R)[0], with R = clifford.tools.g3.
+                   quaternion_to_rotor(...) in clifford's conformal layout (as slerp), read back
+                   with rotor_to_quaternion (Dorst and Valkenburg's polar decomposition of
+                   1 + R; [0] is the root clifford's own n_th_rotor_root takes)
   log_exp_round_trip   exp of what log returned (rotorcert_vectors.round_trip)
-Unsupported (no clifford function, and no one-line idiom of its calls): to_axis_angle, nlerp,
-blend_qlb, blend_log (a hemisphere rule or a zero-angle default axis would be adapter code), and
-every rigid/skinning op (clifford.pga is a bare Cl(3,0,1) layout without translators, motor
-log/exp or blending). adapter.json lists each with its reason.
+Unsupported (no clifford function, and no one-line idiom of its calls): to_axis_angle, to_angle,
+to_axis, nlerp, blend_qlb, blend_log (a hemisphere rule or a zero-angle default axis would be adapter
+code), and every rigid/skinning op (clifford.pga is a bare Cl(3,0,1) layout without translators,
+motor log/exp, decomposition or blending). adapter.json lists each with its reason.
 
 Status (RESULT-2, the rule of the rotorcert_vectors package, conformance/packages/python): a
 clifford exception -> DOMAIN_ERROR with NaN outputs; all outputs NaN -> DOMAIN_ERROR; anything else
@@ -352,12 +356,22 @@ def slerp(a, b, t):
     return [x, y, z, w]
 
 
+@isolated
+@library
+def sqrt(q):
+    g3 = clifford.tools.g3
+    root = clifford.tools.g3c.square_roots_of_rotor(g3.quaternion_to_rotor(wxyz(q)))[0]
+    w, x, y, z = g3.rotor_to_quaternion(root)
+    return [x, y, z, w]
+
+
 OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse,
     "apply_vector": apply_vector, "apply_bivector": apply_bivector, "apply_trivector": apply_trivector,
     "to_matrix": to_matrix, "from_matrix": from_matrix, "from_axis_angle": from_axis_angle,
     "log": log, "exp": exp, "slerp": slerp,
     "log_exp_round_trip": round_trip(log, exp),
+    "sqrt": sqrt,
 }
 
 
@@ -368,7 +382,7 @@ def warm_up():
     for fn, args in ((normalize, (q,)), (compose, (q, r)), (inverse, (q,)), (apply_vector, (q, [1, 2, 3])),
                      (apply_bivector, (q, [1, 2, 3])), (apply_trivector, (q, 2.0)), (to_matrix, (q,)),
                      (log, (q,)), (from_axis_angle.inner, (0.5, [1.0, 2.0, 3.0])),
-                     (exp.inner, ([0.1, 0.2, 0.3],)), (slerp.inner, (q, r, 0.25))):
+                     (exp.inner, ([0.1, 0.2, 0.3],)), (slerp.inner, (q, r, 0.25)), (sqrt.inner, (q,))):
         fn(*args)
 
 
@@ -379,7 +393,7 @@ IMPLEMENTATION = {
     "description": (
         "clifford %s (pygae, Python) in Cl(3,0), binary64: geometric product, reverse sandwich, "
         "normal(), inv(), tools.log_rotor, MultiVector.exp, tools.g3 matrix conversions, "
-        "tools.g3c interpolate_rotors; R = w - x e23 - y e31 - z e12 with e31 = -e13. Status rule "
+        "tools.g3c interpolate_rotors and square_roots_of_rotor; R = w - x e23 - y e31 - z e12 with e31 = -e13. Status rule "
         "(rotorcert_vectors): a clifford exception -> DOMAIN_ERROR with NaN outputs, all outputs NaN -> "
         "DOMAIN_ERROR, else OK as computed; a call that never returns (Taylor exp of a non-finite or "
         "huge bivector) -> raw status 255 (FAIL)." % clifford.__version__),

@@ -104,13 +104,15 @@ struct CQRlibTable {
       "CQRlib 1.1.4 (H. J. Bernstein, C, Debian 12) through its C API, no checks added. "
       "{w,x,y,z} <-> [x,y,z,w]; Hamilton CQRMultiply; CQRRotateByQuaternion q v q* (also for "
       "bivectors); R[row][col] <-> column-major; to_axis_angle 2*CQRGetQuaternionAngle (half "
-      "angle) and CQRGetQuaternionAxis; log = vector part of CQRLog; exp = CQRExp of (0,v); slerp "
+      "angle) and CQRGetQuaternionAxis, together and apart (to_angle, to_axis); log = vector part of CQRLog; exp = CQRExp of (0,v); slerp "
       "= CQRHLERP(a,b,1-t,t); normalize = CPPQR::UnitQ of the same header. Status: DOMAIN_ERROR iff "
       "a call returns non-CQR_SUCCESS or every output is NaN.";
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       // Core (APPLY-3 not claimed: no trivector in CQRlib)
       "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
+      // Extended (no SQRT-1: CQRlib has no square root, only CQRDoublePower; no DQ-7: no dual quaternions)
+      "AXANG-3", "AXANG-4",
       // Interp (no NLERP-1: CQRlib has no nlerp)
       "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5",
       // Robust (EDGE-9 judges weighted ops only; CQRlib has none)
@@ -180,6 +182,21 @@ struct CQRlibTable {
     angle = 2.0 * half;  // polar-form angle phi is half the rotation angle
     axis = {ax.x, ax.y, ax.z};
     return status_of(rc_angle != CQR_SUCCESS ? rc_angle : rc_axis, angle, axis);
+  }
+  // ABI version 3: the same two calls apart. to_angle = 2 * CQRGetQuaternionAngle (the polar
+  // half angle, doubled exactly as in to_axis_angle), to_axis = CQRGetQuaternionAxis.
+  static Status to_angle(const Quat<double>& q, double& angle) {
+    CQRQuaternion cq = to_cqr(q);
+    double half = 0.0;  // left unwritten by CQRlib when |v| <= DBL_MIN (see the header comment)
+    const int rc = CQRGetQuaternionAngle(&half, &cq);
+    angle = 2.0 * half;
+    return status_of(rc, angle);
+  }
+  static Status to_axis(const Quat<double>& q, Vec3<double>& axis) {
+    CQRQuaternion cq = to_cqr(q), ax{};
+    const int rc = CQRGetQuaternionAxis(&ax, &cq);
+    axis = {ax.x, ax.y, ax.z};
+    return status_of(rc, axis);
   }
   // Radians, full angle; the axis is divided by its norm unless normsq == 1 exactly;
   // CQR_BAD_ARGUMENT for normsq == 0.

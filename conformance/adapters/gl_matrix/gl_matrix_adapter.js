@@ -42,6 +42,9 @@
  *   dq_apply_point   vec3.transformMat4(vec3.create(), p, mat4.fromQuat2(mat4.create(), d))
  *                    (gl-matrix has no dual-quaternion point transform: its users go through the
  *                    4x4 matrix of the dual quaternion, as here)
+ *   to_angle         quat.getAxisAngle(vec3.create(), q)      gl-matrix has no angle-only or axis-only
+ *   to_axis          axis written by quat.getAxisAngle(axis, q)   call: each is read from the one call
+ *   dq_to_rotation_translation   quat2.getReal(quat.create(), d), quat2.getTranslation(vec3.create(), d)
  * Rule: each op is the library call on the input as given: no normalisation, no domain check, no
  * hemisphere flip of our own. What gl-matrix does with a non-unit, zero or non-finite input is graded.
  *
@@ -79,6 +82,16 @@ const OPS = {
   dq_compose: (a, b) => quat2.multiply(quat2.create(), quat2.fromValues(...a), quat2.fromValues(...b)),
   dq_normalize: (d) => quat2.normalize(quat2.create(), quat2.fromValues(...d)),
   dq_apply_point: (d, p) => vec3.transformMat4(vec3.create(), V(p), mat4.fromQuat2(mat4.create(), quat2.fromValues(...d))),
+  to_angle: (q) => Math.fround(quat.getAxisAngle(vec3.create(), Q(q))),
+  to_axis: (q) => {
+    const axis = vec3.create();
+    quat.getAxisAngle(axis, Q(q));
+    return axis;
+  },
+  dq_to_rotation_translation: (d) => {
+    const D = quat2.fromValues(...d);
+    return [quat2.getReal(quat.create(), D), quat2.getTranslation(vec3.create(), D)];
+  },
 };
 
 const IMPLEMENTATION = {

@@ -46,11 +46,14 @@ Operations (what a kingdon user calls):
   dq_apply_point   M >> P                              kingdon's sandwich (assumes M ~M = 1)
   dq_normalize     M.normalized()                      M / sqrt(M ~M), kingdon's Study-number sqrt
                                                        and inverse: equals DQ-4 under MOTOR-1
+  sqrt             Phi(q).sqrt()                       kingdon's square root of a Study number a + bI
+                                                       (operators.sqrt; R ** 0.5 calls it too)
 Not mapped (NOT_SUPPORTED): kingdon 3.0.0 has no logarithm, no fractional power (** takes
 integers and 0.5), no matrix-to-rotor, no slerp/nlerp/blends, no motor exponential for non-simple
-bivectors (exp raises NotImplementedError) and no translator/motor constructor: from_matrix,
-to_axis_angle, log, slerp, nlerp, blend_qlb, blend_log, dq_from_rotation_translation, dq_sclerp,
-dq_blend, rotate_about_axis, skin_linear, skin_dual_quaternion (adapter.json says why for each).
+bivectors (exp raises NotImplementedError), no translator/motor constructor and no angle, axis or
+motor decomposition: from_matrix, to_axis_angle, to_angle, to_axis, log, slerp, nlerp, blend_qlb,
+blend_log, dq_from_rotation_translation, dq_to_rotation_translation, dq_sclerp, dq_blend,
+rotate_about_axis, skin_linear, skin_dual_quaternion (adapter.json says why for each).
 """
 import sys
 from importlib.metadata import version as _dist_version
@@ -147,6 +150,12 @@ def exp(v):
     return quat(VGA.bivector([-z, y, -x]).exp())
 
 
+# --- Extended ------------------------------------------------------------------------------------
+
+def sqrt(q):
+    return quat(rotor(q).sqrt())
+
+
 # --- Rigid (PGA motors through MOTOR-1) ----------------------------------------------------------
 
 def dq_compose(a, b):
@@ -168,7 +177,7 @@ OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse,
     "apply_vector": apply_vector, "apply_bivector": apply_bivector, "apply_trivector": apply_trivector,
     "to_matrix": to_matrix, "from_axis_angle": from_axis_angle,
-    "exp": exp,
+    "exp": exp, "sqrt": sqrt,
     "dq_compose": dq_compose, "dq_apply_point": dq_apply_point, "dq_normalize": dq_normalize,
 }
 
@@ -179,7 +188,7 @@ IMPLEMENTATION = {
     "description": (
         "kingdon %s (PyPI) on Python floats: rotors of Algebra(3,0,0) with Phi(q) = w - x e23 - y e31 - z e12 "
         "(e31 = -e13 in kingdon's basis), motors of Algebra(3,0,1) by MOTOR-1; geometric product, "
-        "normalized(), inv(), the >> sandwich, exp() of simple bivectors. No status channel: a Python "
+        "normalized(), inv(), the >> sandwich, exp() of simple bivectors, sqrt(). No status channel: a Python "
         "exception raised by kingdon is graded DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, "
         "anything else OK as computed (rotorcert_vectors)" % KINGDON_VERSION),
 }

@@ -45,8 +45,12 @@ Operations (what a numpy-quaternion user calls; q = np.quaternion(w, x, y, z)):
   slerp            quaternion.slerp_evaluate(a, b, t)        ("between two rotors": declared precondition
                                                             slerp:unit_quaternion; it does not normalise)
   log_exp_round_trip   exp of what log returned (rotorcert_vectors.round_trip)
-Not mapped (NOT_SUPPORTED; adapter.json says why for each): to_axis_angle, apply_bivector,
-apply_trivector, nlerp, blend_qlb, blend_log and every dual-quaternion, rigid and skinning op.
+  to_angle         q.angle()                             ("Angle through which rotor rotates", 2 |log q|;
+                                                            declared precondition to_angle:unit_quaternion)
+  sqrt             np.sqrt(q)                            (quaternion_sqrt, "the square-root of the quaternion")
+Not mapped (NOT_SUPPORTED; adapter.json says why for each): to_axis_angle, to_axis, apply_bivector,
+apply_trivector, nlerp, blend_qlb, blend_log and every dual-quaternion, rigid and skinning op
+(dq_to_rotation_translation included).
 """
 import sys
 import warnings
@@ -120,6 +124,10 @@ def from_axis_angle(angle, axis):
     return xyzw(quaternion.from_rotation_vector(angle * np.array(axis, dtype=float)))
 
 
+def to_angle(q):
+    return quat(q).angle()
+
+
 # --- Interp --------------------------------------------------------------------------------------
 
 def log(q):
@@ -135,11 +143,16 @@ def slerp(a, b, t):
     return xyzw(quaternion.slerp_evaluate(quat(a), quat(b), t))
 
 
+def sqrt(q):
+    return xyzw(np.sqrt(quat(q)))
+
+
 OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse, "apply_vector": apply_vector,
     "to_matrix": to_matrix, "from_matrix": from_matrix, "from_axis_angle": from_axis_angle,
     "log": log, "exp": exp, "slerp": slerp,
     "log_exp_round_trip": round_trip(log, exp),
+    "to_angle": to_angle, "sqrt": sqrt,
 }
 
 IMPLEMENTATION = {
@@ -150,7 +163,7 @@ IMPLEMENTATION = {
         "numpy-quaternion %s (PyPI, import quaternion) on binary64: np.quaternion(w, x, y, z) read back as "
         "[x, y, z, w]; Hamilton product, normalized(), inverse(), rotate_vectors, as_rotation_matrix, "
         "from_rotation_matrix (Bar-Itzhack through scipy), from_rotation_vector(angle * axis), the vector "
-        "part of np.log, np.exp of a pure quaternion, slerp_evaluate. No status channel: an exception "
+        "part of np.log, np.exp of a pure quaternion, slerp_evaluate, q.angle(), np.sqrt. No status channel: an exception "
         "raised by numpy-quaternion is graded DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, "
         "anything else OK as computed (rotorcert_vectors)" % NUMPY_QUATERNION_VERSION),
 }

@@ -62,10 +62,13 @@ Operations (what a PyGLM user calls; Q = glm.quat(w, x, y, z)):
   exp              glm.exp(glm.quat(0, vx, vy, vz))
   slerp            glm.slerp(A, B, t)
   log_exp_round_trip   exp of what log returned (rotorcert_vectors.round_trip)
+  to_angle         glm.angle(Q)                (declared precondition to_angle:unit_quaternion)
+  to_axis          glm.axis(Q)
+  sqrt             glm.sqrt(Q)                 (GLM's sqrt(qua) = pow(q, 0.5))
 Not mapped (NOT_SUPPORTED; adapter.json says why for each): apply_bivector, apply_trivector, nlerp
 (glm.lerp is the unnormalised, oriented lerp and asserts t in [0, 1]), blend_qlb, blend_log, every
-dual-quaternion op (PyGLM does not expose gtx/dual_quaternion), rotate_about_axis, skin_linear,
-skin_dual_quaternion. glm.mix(x, y, a), GLM's oriented slerp, is a second slerp: a table has one
+dual-quaternion op (PyGLM does not expose gtx/dual_quaternion; dq_to_rotation_translation too),
+rotate_about_axis, skin_linear, skin_dual_quaternion. glm.mix(x, y, a), GLM's oriented slerp, is a second slerp: a table has one
 slerp slot, which holds glm.slerp (adapter.json, conventions).
 """
 import sys
@@ -148,6 +151,12 @@ def make_ops(scalar):
         g = Q(q)
         return glm.angle(g), xyz(glm.axis(g))
 
+    def to_angle(q):
+        return glm.angle(Q(q))
+
+    def to_axis(q):
+        return xyz(glm.axis(Q(q)))
+
     def from_axis_angle(angle, axis):
         return xyzw(glm.angleAxis(angle, vec3(*axis)))
 
@@ -162,16 +171,21 @@ def make_ops(scalar):
     def slerp(a, b, t):
         return xyzw(glm.slerp(Q(a), Q(b), t))
 
+    def sqrt(q):
+        return xyzw(glm.sqrt(Q(q)))
+
     return {
         "normalize": normalize, "compose": compose, "inverse": inverse, "apply_vector": apply_vector,
         "to_matrix": to_matrix, "from_matrix": from_matrix,
         "to_axis_angle": to_axis_angle, "from_axis_angle": from_axis_angle,
         "log": log, "exp": exp, "slerp": slerp,
+        "to_angle": to_angle, "to_axis": to_axis, "sqrt": sqrt,
     }
 
 
 # DECL-1: what GLM and PyGLM document (the citations are in adapter.json).
-PRECONDITIONS = ["from_axis_angle:unit_axis", "from_matrix:rotation_matrix", "to_axis_angle:unit_quaternion"]
+PRECONDITIONS = ["from_axis_angle:unit_axis", "from_matrix:rotation_matrix", "to_axis_angle:unit_quaternion",
+                 "to_angle:unit_quaternion"]
 
 
 def implementation(scalar=SCALAR, name="pyglm"):
@@ -182,7 +196,7 @@ def implementation(scalar=SCALAR, name="pyglm"):
             "PyGLM %s (PyPI), glm.%s (%s) over its bundled GLM (1.0.1 quaternion code, "
             "GLM_FORCE_CTOR_INIT, GLM_FORCE_QUAT_DATA_WXYZ): quat(w, x, y, z) read back as [x, y, z, w]; "
             "normalize, *, inverse, q * vec3, mat3_cast, quat_cast, angle/axis, angleAxis, the vector part of "
-            "log, exp of a pure quaternion, slerp. No status channel: an exception raised by PyGLM is graded "
+            "log, exp of a pure quaternion, slerp, angle and axis alone, sqrt. No status channel: an exception raised by PyGLM is graded "
             "DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, anything else OK as computed "
             "(rotorcert_vectors)" % (PYGLM_VERSION, quat, "binary32" if scalar == "float" else "binary64")))
 

@@ -46,8 +46,11 @@ because several properties normalise the object in place):
   slerp            Quaternion.slerp(A, B, amount=t)  (amount clipped to [0, 1]: declared precondition
                                                    slerp:t_in_unit_interval)
   log_exp_round_trip   exp of what log returned (rotorcert_vectors.round_trip)
+  to_angle         Q.angle                           (the same property as in to_axis_angle)
+  to_axis          Q.get_axis(undefined=[0, 0, 1])   (the same call as in to_axis_angle)
 Not mapped (NOT_SUPPORTED; adapter.json says why for each): apply_bivector, apply_trivector,
-nlerp, blend_qlb, blend_log and every dual-quaternion, rigid and skinning op.
+nlerp, blend_qlb, blend_log, sqrt (pyquaternion has none) and every dual-quaternion, rigid and
+skinning op.
 """
 import sys
 import warnings
@@ -123,6 +126,14 @@ def to_axis_angle(q):
     return angle, list(Q.get_axis(undefined=IDENTITY_AXIS))
 
 
+def to_angle(q):
+    return quat(q).angle
+
+
+def to_axis(q):
+    return list(quat(q).get_axis(undefined=IDENTITY_AXIS))
+
+
 def from_axis_angle(angle, axis):
     return xyzw(Quaternion(axis=list(axis), angle=angle))
 
@@ -147,6 +158,7 @@ OPS = {
     "to_axis_angle": to_axis_angle, "from_axis_angle": from_axis_angle,
     "log": log, "exp": exp, "slerp": slerp,
     "log_exp_round_trip": round_trip(log, exp),
+    "to_angle": to_angle, "to_axis": to_axis,
 }
 
 IMPLEMENTATION = {
@@ -156,10 +168,10 @@ IMPLEMENTATION = {
     "description": (
         "pyquaternion %s (PyPI) on numpy float64: Quaternion(w, x, y, z) read back as [x, y, z, w]; "
         "Hamilton product, normalised, inverse, rotate(), rotation_matrix, Quaternion(matrix=), .angle and "
-        "get_axis(), Quaternion(axis=, angle=), the vector part of Quaternion.log, Quaternion.exp of a pure "
-        "quaternion, Quaternion.slerp. No status channel: an exception raised by pyquaternion is graded "
-        "DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, anything else OK as computed "
-        "(rotorcert_vectors)" % PYQUATERNION_VERSION),
+        "get_axis() (together, and each alone), Quaternion(axis=, angle=), the vector part of Quaternion.log, "
+        "Quaternion.exp of a pure quaternion, Quaternion.slerp. No status channel: an exception raised by "
+        "pyquaternion is graded DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, anything else OK "
+        "as computed (rotorcert_vectors)" % PYQUATERNION_VERSION),
 }
 
 if __name__ == "__main__":

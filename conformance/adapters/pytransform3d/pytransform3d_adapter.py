@@ -55,6 +55,8 @@ Operations (what a pytransform3d user calls):
                                                           unless M is a rotation within 1e-6
                                                           (declared: from_matrix:rotation_matrix)
   to_axis_angle    pr.axis_angle_from_quaternion(q) -> (a[3], a[:3])   angle in [0, pi)
+  to_angle         pr.axis_angle_from_quaternion(q)[3]   pytransform3d has no angle-only or axis-only
+  to_axis          pr.axis_angle_from_quaternion(q)[:3]  call: each is read from the one call that gives it
   from_axis_angle  pr.quaternion_from_axis_angle([ux, uy, uz, angle])
   log              pr.compact_axis_angle_from_quaternion(q) / 2
   exp              pr.quaternion_from_compact_axis_angle(2 v)
@@ -64,8 +66,9 @@ Operations (what a pytransform3d user calls):
   dq_apply_point   pt.dq_prod_vector(d, p)
   dq_normalize     pt.norm_dual_quaternion(d)
   dq_sclerp        pt.dual_quaternion_sclerp(a, b, t)
+  dq_to_rotation_translation   pt.pq_from_dual_quaternion(d) -> (pq[3:] as [x, y, z, w], pq[:3])
   rotate_about_axis pt.dq_prod_vector(pt.dual_quaternion_from_screw_parameters(c, u, 0.0, angle), p)
-Not mapped (NOT_SUPPORTED): pytransform3d 3.17.0 has no nlerp, no n-way quaternion or dual-quaternion
+Not mapped (NOT_SUPPORTED): pytransform3d 3.17.0 has no quaternion square root, no nlerp, no n-way quaternion or dual-quaternion
 blend, no skinning, and no bivector or trivector sandwich (its "rotors" are quaternions relabelled
 (a, b_yz, b_zx, b_xy) and act on vectors only): adapter.json says why for each.
 """
@@ -151,6 +154,14 @@ def to_axis_angle(q):
     return a[3], a[:3]
 
 
+def to_angle(q):
+    return pr.axis_angle_from_quaternion(wxyz(q))[3]
+
+
+def to_axis(q):
+    return pr.axis_angle_from_quaternion(wxyz(q))[:3]
+
+
 def from_axis_angle(angle, axis):
     ux, uy, uz = axis
     return xyzw(pr.quaternion_from_axis_angle(np.array([ux, uy, uz, angle], dtype=np.float64)))
@@ -194,6 +205,11 @@ def dq_sclerp(a, b, t):
     return dq_out(pt.dual_quaternion_sclerp(dq_in(a), dq_in(b), t))
 
 
+def dq_to_rotation_translation(d):
+    pq = pt.pq_from_dual_quaternion(dq_in(d))  # (x, y, z, qw, qx, qy, qz)
+    return xyzw(pq[3:]), pq[:3]
+
+
 def rotate_about_axis(c, u, angle, p):
     return pt.dq_prod_vector(pt.dual_quaternion_from_screw_parameters(vec(c), vec(u), 0.0, angle), vec(p))
 
@@ -206,6 +222,7 @@ OPS = {
     "dq_from_rotation_translation": dq_from_rotation_translation, "dq_compose": dq_compose,
     "dq_apply_point": dq_apply_point, "dq_normalize": dq_normalize, "dq_sclerp": dq_sclerp,
     "rotate_about_axis": rotate_about_axis,
+    "to_angle": to_angle, "to_axis": to_axis, "dq_to_rotation_translation": dq_to_rotation_translation,
 }
 
 IMPLEMENTATION = Implementation(

@@ -1,4 +1,4 @@
-// The rotorcert C ABI, version 2 (impls/include/rotorcert/impl_abi.h), written out in Rust for a
+// The rotorcert C ABI, version 3 (impls/include/rotorcert/impl_abi.h), written out in Rust for a
 // Rust adapter: the table structs with the header's field order, the batch loop with the status
 // rule of RESULT-2, and the panic boundary. One file for every Rust adapter: each crate includes it
 // with `#[path = "../../rust_abi/abi.rs"] mod abi;` (conformance/adapters/rust_abi/, installed and
@@ -27,7 +27,7 @@ use std::panic::{self, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Once;
 
-pub const RC_ABI_VERSION: u32 = 2;
+pub const RC_ABI_VERSION: u32 = 3;
 pub const RC_ABI_VERSION_MIN: u32 = 1;
 pub const RC_OK: u8 = 0;
 pub const RC_DOMAIN_ERROR: u8 = 1;
@@ -112,6 +112,21 @@ impl<S: 'static> Ops<S> {
     };
 }
 
+/// RC_DECLARE_OPS3 of impl_abi.h (ABI version 3), field for field: the operations read only from a
+/// table whose abi_version is >= 3, in their own struct (rc_impl.f32_v3 / f64_v3).
+#[repr(C)]
+pub struct Ops3<S: 'static> {
+    pub to_angle: Option<Fn1<S>>,
+    pub to_axis: Option<Fn1<S>>,
+    pub sqrt: Option<Fn1<S>>,
+    pub dq_to_rotation_translation: Option<Fn1x2<S>>,
+}
+
+impl<S: 'static> Ops3<S> {
+    /// Every version-3 operation NOT_SUPPORTED (`..Ops3::NONE`).
+    pub const NONE: Self = Ops3 { to_angle: None, to_axis: None, sqrt: None, dq_to_rotation_translation: None };
+}
+
 /// A NULL-terminated list of C strings (clauses, preconditions, conventions).
 #[repr(transparent)]
 pub struct StrList<const N: usize>(pub [*const c_char; N]);
@@ -134,7 +149,8 @@ macro_rules! cstr {
     };
 }
 
-/// rc_impl of impl_abi.h (version 2 layout).
+/// rc_impl of impl_abi.h (version 3 layout: the version-2 fields, then f32_v3 / f64_v3, of which
+/// at most the one of `scalar` is set).
 #[repr(C)]
 pub struct Impl {
     pub abi_version: u32,
@@ -151,11 +167,14 @@ pub struct Impl {
     pub current_target: Option<unsafe extern "C" fn() -> *const c_char>,
     pub preconditions: *const *const c_char,
     pub conventions: *const *const c_char,
+    pub f32_v3: *const Ops3<f32>,
+    pub f64_v3: *const Ops3<f64>,
 }
 // SAFETY: a table is immutable and points only to 'static data.
 unsafe impl Sync for Impl {}
 
-/// The body of rotorcert_impl_entry: the index-th table for a supported ABI version.
+/// The body of rotorcert_impl_entry: the index-th table for a supported ABI version (a newer table
+/// is an older one with fields appended: a host asking for version 1 or 2 reads its prefix).
 pub fn entry(abi_version: u32, index: u32, tables: &[&'static Impl]) -> *const Impl {
     if !(RC_ABI_VERSION_MIN..=RC_ABI_VERSION).contains(&abi_version) {
         return std::ptr::null();

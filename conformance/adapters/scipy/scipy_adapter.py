@@ -55,8 +55,12 @@ Operations (what a scipy user calls):
   dq_normalize     RigidTransform.from_dual_quat(d).as_dual_quat()
   dq_sclerp        A * (A.inv() * B) ** t with A, B = RigidTransform.from_dual_quat(a), (b): the
                    documented ScLERP of RigidTransform.__pow__ from A towards B
+  to_angle         Rotation.from_quat(q).magnitude()   (the angle in [0, pi])
+  dq_to_rotation_translation   t, r = RigidTransform.from_dual_quat(d).as_components(): (r.as_quat(), t)
 Not mapped (NOT_SUPPORTED; adapter.json says why for each): apply_bivector, apply_trivector (scipy
-has no bivectors or trivectors), to_axis_angle (no axis call: magnitude() is the angle only),
+has no bivectors or trivectors), to_axis_angle and to_axis (no axis call: magnitude() is the angle
+only), sqrt (no square root: Rotation ** 0.5 is the documented principal root, half of the angle
+in [0, pi], which for w < 0 is the square root of -q, not of q),
 nlerp, blend_qlb and blend_log (Rotation.mean is the chordal L2 mean, another definition), dq_blend
 (RigidTransform.mean: chordal mean plus mean translation), rotate_about_axis, skin_linear,
 skin_dual_quaternion.
@@ -204,20 +208,32 @@ def dq_sclerp(a, b, t):
     return (ta * (ta.inv() * tb) ** t).as_dual_quat()
 
 
+def dq_to_rotation_translation(d):
+    t, r = RigidTransform.from_dual_quat(d).as_components()
+    return r.as_quat(), t
+
+
+# --- ABI version 3 (Extended) --------------------------------------------------------------------
+
+def to_angle(q):
+    return Rotation.from_quat(q).magnitude()
+
+
 OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse, "apply_vector": apply_vector,
     "to_matrix": to_matrix, "from_matrix": from_matrix, "from_axis_angle": from_axis_angle,
     "log": log, "exp": exp, "slerp": slerp,
     "dq_from_rotation_translation": dq_from_rotation_translation, "dq_compose": dq_compose,
     "dq_apply_point": dq_apply_point, "dq_normalize": dq_normalize, "dq_sclerp": dq_sclerp,
+    "to_angle": to_angle, "dq_to_rotation_translation": dq_to_rotation_translation,
 }
 
 IMPLEMENTATION = Implementation(
     name="scipy", version=SCIPY_VERSION, scalar="double", ops=OPS,
     description=(
         "SciPy %s (PyPI) scipy.spatial.transform on numpy float64: Rotation (from_quat/as_quat "
-        "scalar-last, *, inv, apply, as_matrix/from_matrix, as_rotvec/from_rotvec), Slerp and "
-        "RigidTransform (dual quaternions, *, apply, ** as ScLERP). from_quat normalises its input. "
+        "scalar-last, *, inv, apply, as_matrix/from_matrix, as_rotvec/from_rotvec, magnitude), Slerp and "
+        "RigidTransform (dual quaternions, *, apply, ** as ScLERP, as_components). from_quat normalises its input. "
         "No status channel: a Python exception raised by scipy is graded DOMAIN_ERROR (outputs NaN), "
         "all outputs NaN is DOMAIN_ERROR, anything else OK as computed (rotorcert_vectors)" % SCIPY_VERSION))
 

@@ -44,6 +44,8 @@ Operations (what a transforms3d user calls):
                                                   for "3x3 rotation matrix" input (declared:
                                                   from_matrix:rotation_matrix; it has no determinant check)
   to_axis_angle    quat2axangle(q) -> (theta, vector)
+  to_angle         quat2axangle(q)[1]             transforms3d has no angle-only or axis-only call:
+  to_axis          quat2axangle(q)[0]             each is read from the one call a user gets it from
   from_axis_angle  axangle2quat(axis, angle)      is_normalized=False (its default): normalises the axis
   log              qlog(q)[1:]
   exp              qexp([0, x, y, z])
@@ -52,8 +54,8 @@ Operations (what a transforms3d user calls):
                    the point c with direction u (axangles.py:54), "to be multiplied on left of
                    coordinate column vector"; the product with the homogeneous point is that use
 Not mapped (NOT_SUPPORTED): transforms3d 0.4.2 has no public slerp or nlerp (its private
-_gohlketransforms module is not API), no blends, no rotor/bivector/trivector objects, no dual
-quaternions and no skinning (adapter.json says why for each).
+_gohlketransforms module is not API), no square root (qpow is the general power), no blends, no
+rotor/bivector/trivector objects, no dual quaternions and no skinning (adapter.json says why for each).
 """
 import sys
 from importlib.metadata import version as _dist_version
@@ -122,6 +124,14 @@ def to_axis_angle(q):
     return theta, vector
 
 
+def to_angle(q):
+    return tq.quat2axangle(wxyz(q))[1]
+
+
+def to_axis(q):
+    return tq.quat2axangle(wxyz(q))[0]
+
+
 def from_axis_angle(angle, axis):
     return xyzw(tq.axangle2quat(np.array(axis, dtype=np.float64), angle))
 
@@ -149,6 +159,7 @@ OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse, "apply_vector": apply_vector,
     "to_matrix": to_matrix, "from_matrix": from_matrix, "to_axis_angle": to_axis_angle,
     "from_axis_angle": from_axis_angle, "log": log, "exp": exp, "rotate_about_axis": rotate_about_axis,
+    "to_angle": to_angle, "to_axis": to_axis,
 }
 
 IMPLEMENTATION = Implementation(
@@ -159,7 +170,7 @@ IMPLEMENTATION = Implementation(
     description=(
         "transforms3d %s (PyPI) transforms3d.quaternions on float64 numpy arrays, [w, x, y, z] reordered "
         "to the ABI's [x, y, z, w]: qmult, qinverse, q / qnorm(q), rotate_vector(is_normalized=False), "
-        "quat2mat, mat2quat, quat2axangle, axangle2quat, qlog (vector part), qexp of a pure quaternion, "
+        "quat2mat, mat2quat, quat2axangle (whole, and its angle or axis alone), axangle2quat, qlog (vector part), qexp of a pure quaternion, "
         "axangles.axangle2aff applied to a homogeneous point. "
         "No status channel: a Python exception raised by transforms3d is graded DOMAIN_ERROR (outputs NaN), "
         "all outputs NaN is DOMAIN_ERROR, anything else OK as computed (rotorcert_vectors)" % TRANSFORMS3D_VERSION))

@@ -3,7 +3,7 @@
 // the documented "Will panic if ... is not normalized when glam_assert is enabled" assertions are
 // compiled out, as in every default build of a glam user).
 //
-// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 2) with
+// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 3) with
 // two tables named "glam": index 0 binary32 (glam::Quat, Vec3, Mat3; Quat is glam's SSE2 type on
 // x86_64), index 1 binary64 (glam::DQuat, DVec3, DMat3). scripts/setup-adapters builds it with
 // `cargo build --release --locked` into the adapter's environment; `rotorcert thirdparty` loads
@@ -33,9 +33,11 @@ pub mod f64 {
 
 /// Clauses whose operations glam has (no bivectors, trivectors, blends, dual quaternions or
 /// skinning: those levels are not claimed).
-static CLAUSES: StrList<29> = str_list![
+static CLAUSES: StrList<31> = str_list![
     // Core (APPLY-2, APPLY-3: glam has no bivectors or trivectors)
     "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
+    // Extended (no SQRT-1, DQ-7: glam has no square root and no dual quaternions)
+    "AXANG-3", "AXANG-4",
     // Interp
     "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
     // Robust (EDGE-9 judges weighted ops only)
@@ -56,7 +58,7 @@ static PRECONDITIONS: StrList<9> = str_list![
 ];
 
 /// Conventions glam chose where the spec allows several answers (citations in adapter.json).
-static CONVENTIONS: StrList<3> = str_list!["from_matrix:sign", "to_axis_angle:identity_axis"];
+static CONVENTIONS: StrList<4> = str_list!["from_matrix:sign", "to_axis_angle:identity_axis", "to_axis:identity_axis"];
 
 const LEVELS: u32 = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_ROBUST;
 /// The version string of both tables: the pinned crate and how it is built.
@@ -81,6 +83,8 @@ static TABLE_F32: Impl = Impl {
     current_target: None,
     preconditions: PRECONDITIONS.0.as_ptr(),
     conventions: CONVENTIONS.0.as_ptr(),
+    f32_v3: &f32::OPS3,
+    f64_v3: std::ptr::null(),
 };
 
 static TABLE_F64: Impl = Impl {
@@ -98,6 +102,8 @@ static TABLE_F64: Impl = Impl {
     current_target: None,
     preconditions: PRECONDITIONS.0.as_ptr(),
     conventions: CONVENTIONS.0.as_ptr(),
+    f32_v3: std::ptr::null(),
+    f64_v3: &f64::OPS3,
 };
 
 /// The entry point a rotorcert plugin exports (RC_IMPL_ENTRY_SYMBOL).

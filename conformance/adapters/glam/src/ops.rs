@@ -5,7 +5,7 @@
 // from_scaled_axis) and the ABI's quaternion-view log (angle/2 * axis), an exact scaling by 2.
 // Conventions: adapter.json.
 
-use crate::abi::{run, Answer, Ops, Panics, MAX_WIDTH};
+use crate::abi::{run, Answer, Ops, Ops3, Panics, MAX_WIDTH};
 use std::ffi::c_int;
 
 const LIB: &str = "glam";
@@ -81,6 +81,23 @@ unsafe extern "C" fn to_axis_angle(n: usize, q: *const S, angle: *mut S, axis: *
     })
 }
 
+// ABI version 3. glam has no angle-only or axis-only query of a quaternion (Quat::angle_between is
+// the angle between two rotations): to_axis_angle() is the call a glam user gets either from, so
+// to_angle is its angle (`.1`) and to_axis its axis (`.0`), each from its own call.
+unsafe extern "C" fn to_angle(n: usize, q: *const S, angle: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "to_angle", n, [(q, 4)], [(angle, 1)], st, Panics::Defect, |i, o| {
+        o[0][0] = quat(&i[0]).to_axis_angle().1;
+        Answer::Value
+    })
+}
+
+unsafe extern "C" fn to_axis(n: usize, q: *const S, axis: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "to_axis", n, [(q, 4)], [(axis, 3)], st, Panics::Defect, |i, o| {
+        put(&mut o[0], &quat(&i[0]).to_axis_angle().0.to_array());
+        Answer::Value
+    })
+}
+
 // The ABI passes the angle first, then the axis; glam takes (axis, angle).
 unsafe extern "C" fn from_axis_angle(n: usize, angle: *const S, axis: *const S, out: *mut S, st: *mut u8) -> c_int {
     run(LIB, "from_axis_angle", n, [(angle, 1), (axis, 3)], [(out, 4)], st, Panics::Defect, |i, o| {
@@ -136,3 +153,7 @@ pub static OPS: Ops<S> = Ops {
     nlerp: Some(nlerp),
     ..Ops::NONE
 };
+
+/// The ABI version 3 operations glam has: the halves of to_axis_angle (no square root, no dual
+/// quaternions).
+pub static OPS3: Ops3<S> = Ops3 { to_angle: Some(to_angle), to_axis: Some(to_axis), ..Ops3::NONE };

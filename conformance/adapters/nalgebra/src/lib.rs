@@ -1,7 +1,7 @@
 // rotorcert adapter for nalgebra (https://nalgebra.rs), the crate version pinned in Cargo.toml /
 // Cargo.lock, built with its default features (std, macros).
 //
-// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 2) with
+// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 3) with
 // two tables named "nalgebra": index 0 binary32 (UnitQuaternion<f32>, Quaternion<f32>,
 // UnitDualQuaternion<f32>, Isometry3<f32>), index 1 binary64 (the same types over f64).
 // scripts/setup-adapters builds it with `cargo build --release --locked` into the adapter's
@@ -25,9 +25,11 @@ pub mod f64 {
 
 /// Clauses whose operations nalgebra has (no bivectors or trivectors, no blends, no dual-quaternion
 /// blending, no skinning).
-static CLAUSES: StrList<35> = str_list![
+static CLAUSES: StrList<39> = str_list![
     // Core (APPLY-2, APPLY-3: nalgebra has no bivectors or trivectors)
     "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
+    // Extended
+    "AXANG-3", "AXANG-4", "SQRT-1", "DQ-7",
     // Interp
     "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
     // Rigid (DQ-6: no dual-quaternion blending)
@@ -46,10 +48,13 @@ static PRECONDITIONS: StrList<6> = str_list![
 ];
 
 /// Conventions nalgebra chose where the spec allows several answers (citations in adapter.json).
-static CONVENTIONS: StrList<6> = str_list![
+static CONVENTIONS: StrList<9> = str_list![
     "from_matrix:sign",
     "to_axis_angle:angle_range",
     "to_axis_angle:identity_axis",
+    "to_angle:angle_range",
+    "to_axis:angle_range",
+    "to_axis:identity_axis",
     "log:shorter_arc",
     "nlerp:oriented",
 ];
@@ -78,6 +83,8 @@ static TABLE_F32: Impl = Impl {
     current_target: None,
     preconditions: PRECONDITIONS.0.as_ptr(),
     conventions: CONVENTIONS.0.as_ptr(),
+    f32_v3: &f32::OPS3,
+    f64_v3: std::ptr::null(),
 };
 
 static TABLE_F64: Impl = Impl {
@@ -95,6 +102,8 @@ static TABLE_F64: Impl = Impl {
     current_target: None,
     preconditions: PRECONDITIONS.0.as_ptr(),
     conventions: CONVENTIONS.0.as_ptr(),
+    f32_v3: std::ptr::null(),
+    f64_v3: &f64::OPS3,
 };
 
 /// The entry point a rotorcert plugin exports (RC_IMPL_ENTRY_SYMBOL).

@@ -6,7 +6,7 @@
 // normalized"), Unit::new_normalize (the idiom of the from_axis_angle docs) and
 // UnitDualQuaternion::new_normalize. Conventions: adapter.json.
 
-use crate::abi::{run, Answer, Ops, Panics, MAX_WIDTH};
+use crate::abi::{run, Answer, Ops, Ops3, Panics, MAX_WIDTH};
 use nalgebra::{
     DualQuaternion, Isometry3, Matrix3, Point3, Quaternion, Rotation3, Translation3, Unit, UnitDualQuaternion,
     UnitQuaternion, Vector3,
@@ -117,6 +117,39 @@ unsafe extern "C" fn to_axis_angle(n: usize, q: *const S, angle: *mut S, axis: *
     })
 }
 
+// ABI version 3: UnitQuaternion::angle(), "The rotation angle in [0; pi] of this unit quaternion"
+// (2 atan2(|v|, |w|)), the angle of the same rotation about -u where w < 0 (ACC-1 angle_range).
+unsafe extern "C" fn to_angle(n: usize, q: *const S, angle: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "to_angle", n, [(q, 4)], [(angle, 1)], st, Panics::Defect, |i, o| {
+        o[0][0] = unit(&i[0]).angle();
+        Answer::Value
+    })
+}
+
+// UnitQuaternion::axis(), "The rotation axis of this unit quaternion or None if the rotation is
+// zero": v/|v| for w >= 0, -v/|v| for w < 0 (the axis of angle(), ACC-1 angle_range). None is
+// written as nalgebra documents it, the zero rotation, whose axis is any unit axis (ACC-1
+// identity_axis): (0, 0, 1), as to_axis_angle writes it.
+unsafe extern "C" fn to_axis(n: usize, q: *const S, axis: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "to_axis", n, [(q, 4)], [(axis, 3)], st, Panics::Defect, |i, o| {
+        match unit(&i[0]).axis() {
+            Some(u) => put(&mut o[0], u.as_slice()),
+            None => put(&mut o[0], &[0.0, 0.0, 1.0]),
+        }
+        Answer::Value
+    })
+}
+
+// Quaternion::sqrt(), "Calculates square root", of the rotation UnitQuaternion::from_quaternion(q)
+// (nalgebra has no UnitQuaternion::sqrt; the unit quaternion is a Quaternion through Deref):
+// powf(0.5) = (ln() * 0.5).exp(), with Quaternion::ln = (ln|q|, v.normalize() * acos(w / |q|)).
+unsafe extern "C" fn sqrt(n: usize, q: *const S, out: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "sqrt", n, [(q, 4)], [(out, 4)], st, Panics::Defect, |i, o| {
+        put_quat(&mut o[0], &unit(&i[0]).quaternion().sqrt());
+        Answer::Value
+    })
+}
+
 // The ABI passes the angle first, then the axis.
 unsafe extern "C" fn from_axis_angle(n: usize, angle: *const S, axis: *const S, out: *mut S, st: *mut u8) -> c_int {
     run(LIB, "from_axis_angle", n, [(angle, 1), (axis, 3)], [(out, 4)], st, Panics::Defect, |i, o| {
@@ -163,6 +196,17 @@ unsafe extern "C" fn dq_from_rotation_translation(n: usize, q: *const S, t: *con
     run(LIB, "dq_from_rotation_translation", n, [(q, 4), (t, 3)], [(out, 8)], st, Panics::Defect, |i, o| {
         let d = UnitDualQuaternion::from_parts(Translation3::from(vec3(&i[1])), unit(&i[0]));
         put_dual(&mut o[0], d.dual_quaternion());
+        Answer::Value
+    })
+}
+
+// UnitDualQuaternion::rotation() ("Return the rotation part of this unit dual quaternion": the
+// real part) and translation() (vector part of 2 dual real*) of new_normalize(d), as dq_apply_point.
+unsafe extern "C" fn dq_to_rotation_translation(n: usize, d: *const S, q: *mut S, t: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "dq_to_rotation_translation", n, [(d, 8)], [(q, 4), (t, 3)], st, Panics::Defect, |i, o| {
+        let u = UnitDualQuaternion::new_normalize(dual(&i[0]));
+        put_quat(&mut o[0], u.rotation().quaternion());
+        put(&mut o[1], u.translation().vector.as_slice());
         Answer::Value
     })
 }
@@ -240,4 +284,11 @@ pub static OPS: Ops<S> = Ops {
     dq_sclerp: Some(dq_sclerp),
     rotate_about_axis: Some(rotate_about_axis),
     ..Ops::NONE
+};
+
+pub static OPS3: Ops3<S> = Ops3 {
+    to_angle: Some(to_angle),
+    to_axis: Some(to_axis),
+    sqrt: Some(sqrt),
+    dq_to_rotation_translation: Some(dq_to_rotation_translation),
 };
