@@ -282,6 +282,19 @@ std::vector<AcceptableConvention> build_conventions() {
                  [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
                    return unit_rotation_error(got[0], quat(want[0]));
                  }});
+  // SQRT-1 on a non-unit q (EDGE-5): the algebra's square root s with s^2 = q has |s| = sqrt|q|
+  // (numpy-quaternion's np.sqrt, GLM's and PyGLM's sqrt, kingdon's sqrt()): the rotation root
+  // scaled, a correct answer of the algebra. Measured as the rotation of s/|s| against the
+  // reference (sign-free, as `sign`) and the norm relation | |s|^2 / |q| - 1 |.
+  all.push_back({"algebraic_root", "sqrt of a non-unit q returns the algebra's root s (s^2 = q, |s| = sqrt|q|)", false,
+                 is("sqrt"), [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 [](const AbiOp&, const Case& c, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   const Real n = block_norm(got[0], 0, 4), nq = block_norm(c.inputs[0], 0, 4);
+                   if (mpfr::isnan(n) || n == 0 || nq == 0) return std::nullopt;
+                   const Quat s = quat(got[0]);
+                   const Quat u{s.w / n, s.x / n, s.y / n, s.z / n};
+                   return std::max(clause::METRIC_1_rotation_distance(u, quat(want[0])), Real(abs(n * n / nq - Real(1))));
+                 }});
   const auto minus_one_input = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
   all.push_back({"minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", false,
                  is("sqrt"),
