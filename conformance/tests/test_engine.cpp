@@ -515,7 +515,7 @@ using V = ri::Vec3<double>;
 using D = ri::DualQuat<double>;
 
 /// Careful and careless forms of the four operations of ABI version 3, each a table of its own.
-enum class V3Impl { right, acos_angle, glm_axis, minus_axis, no_root, minus_root, unnormalised_translation };
+enum class V3Impl { right, acos_angle, glm_axis, minus_axis, no_root, minus_root, principal_root, unnormalised_translation };
 
 template <V3Impl K>
 struct V3Ops : Normalizer<0> {
@@ -555,6 +555,9 @@ struct V3Ops : Normalizer<0> {
     if (!ok(q)) return ri::Status::domain_error;
     Q u;
     normalize_exact(q, u);
+    if constexpr (K == V3Impl::principal_root)
+      if (u[3] < 0)
+        for (double& c : u) c = -c;  // the rotation's root: of -q^ where w < 0 (SciPy's Rotation ** 0.5)
     const double n = vnorm(u);
     if constexpr (K == V3Impl::no_root) {  // the rotation itself, not its square root
       out = u;
@@ -630,6 +633,10 @@ TEST(Engine, SquareRootPassesAndTheRotationItselfFails) {
   const auto minus = run(ri::table<V3Ops<V3Impl::minus_root>>(), "SQRT-1");
   EXPECT_EQ(minus.outcome, engine::Outcome::pass);
   EXPECT_TRUE(accepted_as(minus, "sign"));
+  // The root of -q^ where w < 0, the rotation's principal root: ACCEPTABLE (principal_root).
+  const auto principal = run(ri::table<V3Ops<V3Impl::principal_root>>(), "SQRT-1");
+  EXPECT_EQ(principal.outcome, engine::Outcome::pass) << principal.worst_detail;
+  EXPECT_TRUE(accepted_as(principal, "principal_root"));
 }
 
 TEST(Engine, RotationAndTranslationOfADualQuaternionNeedTheNormalisation) {

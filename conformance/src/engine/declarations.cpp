@@ -295,6 +295,20 @@ std::vector<AcceptableConvention> build_conventions() {
                    const Quat u{s.w / n, s.x / n, s.y / n, s.z / n};
                    return std::max(clause::METRIC_1_rotation_distance(u, quat(want[0])), Real(abs(n * n / nq - Real(1))));
                  }});
+  // SQRT-1 where w < 0: q^ and -q^ are one rotation; a library of rotations (not of quaternions:
+  // SciPy's Rotation ** 0.5, nalgebra's powf(0.5)) returns the rotation's principal root, the
+  // root of -q^, half of its angle in [0, pi] (for -1, the identity). Measured as `sign`.
+  all.push_back({"principal_root", "sqrt returns the root of -q^ where w < 0: the rotation's principal square root (half its angle in [0, pi])",
+                 false, is("sqrt"),
+                 [](const AbiOp&, const Case& c, const Values&, ref::Format) { return c.inputs[0][3] < 0; },
+                 [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
+                   if (!(c.inputs[0][3] < 0)) return std::nullopt;
+                   std::vector<Real> minus = c.inputs[0];
+                   for (Real& x : minus) x = -x;
+                   const ReferenceResult root = op.reference({minus}, 0);
+                   if (root.status != ref::Status::ok) return std::nullopt;
+                   return unit_rotation_error(got[0], quat(root.outputs[0]));
+                 }});
   const auto minus_one_input = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
   all.push_back({"minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", false,
                  is("sqrt"),
