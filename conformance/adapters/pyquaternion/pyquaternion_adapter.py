@@ -58,7 +58,7 @@ from importlib.metadata import version as _dist_version
 
 import numpy as np
 from pyquaternion import Quaternion
-from rotorcert_vectors import round_trip, run_adapter
+from rotorcert_vectors import round_trip, run_adapter, watch
 
 PYQUATERNION_VERSION = _dist_version("pyquaternion")
 
@@ -83,9 +83,10 @@ IDENTITY_AXIS = np.array([0.0, 0.0, 1.0])
 
 
 def quat(q):
-    """A spec quaternion [x, y, z, w] as pyquaternion's Quaternion(w, x, y, z)."""
+    """A spec quaternion [x, y, z, w] as pyquaternion's Quaternion(w, x, y, z), watched: a call that
+    modifies it in place is reported (HYG-1), as the caller's own object would have been modified."""
     x, y, z, w = q
-    return Quaternion(w, x, y, z)
+    return watch(Quaternion(w, x, y, z))
 
 
 def xyzw(Q):

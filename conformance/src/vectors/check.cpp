@@ -140,6 +140,26 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
     r.clause = cl.id;
     r.level = cl.level;
     r.tolerance = cl.tolerance;
+    if (cl.id == "HYG-1" && contains(results.hygiene, cl.id)) {
+      // HYG-1 from the results themselves: the writer compared every call's inputs before and
+      // after it (the rotorcert-vectors packages' watch) and says what a call modified.
+      engine::ClauseJudge judge{r};
+      for (const VectorFile& f : set.files) {
+        if (f.format != format || !supported(f.op)) continue;
+        for (const Vector& v : f.tests) {
+          const auto it = by_id.find(v.id);
+          if (it == by_id.end()) continue;
+          const std::string& modified = it->second->modified_inputs;
+          judge.record(modified.empty() ? engine::CaseVerdict{ref::Verdict::pass, 0, "inputs unchanged"}
+                                        : engine::CaseVerdict{ref::Verdict::fail, NAN, f.op + ": " + modified},
+                       f.abi_op(), v.input, format);
+        }
+      }
+      judge.finish();
+      if (r.cases > 0) graded.push_back(cl.id);
+      all.push_back(std::move(r));
+      continue;
+    }
     std::vector<const VectorFile*> files;
     for (const VectorFile& f : set.files)
       if (f.clause == cl.id && f.format == format) files.push_back(&f);
@@ -221,10 +241,11 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
       throw VectorsError(results.file, "/implementation/claimed_clauses/" + std::to_string(i),
                          "\"" + t.claimed_clauses[i] + "\" is not a clause of spec " + spec.version);
   // Meta clauses bind the suite, not implementations: a claim of one is not scored. Hygiene
-  // clauses (section 9a) need the library's own calls, which a results file cannot show.
+  // clauses (section 9a) need the library's own calls, which a results file cannot show, except
+  // HYG-1 where the writer checked it on every call (implementation.hygiene).
   std::erase_if(t.claimed_clauses, [&](const std::string& id) {
     const std::string& level = spec.find_clause(id)->level;
-    return level == "Meta" || level == "Hygiene";
+    return level == "Meta" || (level == "Hygiene" && !contains(results.hygiene, id));
   });
   std::erase(t.claimed_levels, std::string("Hygiene"));
   for (std::size_t i = 0; i < t.claimed_levels.size(); ++i)

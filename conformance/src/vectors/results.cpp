@@ -59,6 +59,12 @@ ResultsFile parse_results(const json& j, const std::filesystem::path& file) {
         throw VectorsError(file, std::string("/implementation/") + key + "/" + std::to_string(i),
                            "a declaration is \"op:id\" (DECL-1), got \"" + into[i] + "\"");
   }
+  if (impl.contains("hygiene")) {
+    r.hygiene = strings_at(impl, "hygiene", "/implementation");
+    for (std::size_t i = 0; i < r.hygiene.size(); ++i)
+      if (r.hygiene[i] != "HYG-1")
+        fail("/implementation/hygiene/" + std::to_string(i), "a results file can only show HYG-1, not \"" + r.hygiene[i] + "\"");
+  }
   r.vectors = string_at(j, "vectors", "", true);
   if (j.contains("unsupported_ops")) r.unsupported_ops = strings_at(j, "unsupported_ops", "");
   if (!j.contains("results")) fail("", "missing field \"results\"");
@@ -84,6 +90,10 @@ ResultsFile parse_results(const json& j, const std::filesystem::path& file) {
     }
     if (!e.contains("out")) fail(p, "missing field \"out\"");
     if (!e["out"].is_object()) fail(p + "/out", "expected an object of output arrays");
+    if (e.contains("modified_inputs")) {
+      if (!e["modified_inputs"].is_string()) fail(p + "/modified_inputs", "expected a string");
+      entry.modified_inputs = e["modified_inputs"].get<std::string>();
+    }
     entry.out = e["out"];
     r.results.push_back(std::move(entry));
   }

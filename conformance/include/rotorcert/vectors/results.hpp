@@ -23,6 +23,7 @@ struct ResultEntry {
   std::uint8_t status = 0;      // RC_OK, RC_DOMAIN_ERROR, or the raw byte an adapter passed through
   int call_rc = 0;              // nonzero: the call as a whole failed (optional field "call_rc")
   nlohmann::json out;           // {"out_q": [values...]}, decoded by the grading
+  std::string modified_inputs;  // HYG-1: what the call modified in its inputs ("" = nothing)
 };
 
 struct ResultsFile {
@@ -32,6 +33,7 @@ struct ResultsFile {
   std::string vectors;                     // as written: the export's directory or index.json, relative to `file`
   std::vector<std::string> unsupported_ops;  // ABI ops declared NOT_SUPPORTED (RESULT-1)
   std::vector<std::string> preconditions, conventions;  // DECL-1 declarations, "op:id"
+  std::vector<std::string> hygiene;  // the hygiene clauses the writer checked on every call ("HYG-1")
   std::vector<ResultEntry> results;
 
   ref::Format format() const { return scalar == "float" ? ref::Format::binary32 : ref::Format::binary64; }

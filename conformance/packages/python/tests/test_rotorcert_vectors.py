@@ -22,6 +22,9 @@ GOLDEN = """{
     ],
     "preconditions": [
       "slerp:t_in_unit_interval"
+    ],
+    "hygiene": [
+      "HYG-1"
     ]
   },
   "vectors": "vectors",
@@ -172,3 +175,27 @@ def test_a_foreign_file_is_refused(tmp_path):
     (tmp_path / "index.json").write_text('{"format": "something-else"}')
     with pytest.raises(rv.VectorsError):
         rv.VectorSet(tmp_path)
+
+
+def test_a_call_that_modifies_its_inputs_is_reported():
+    """HYG-1: the input lists, and library objects registered with watch(), are compared before and
+    after the call; the result entry names what changed."""
+    class Box:
+        def __init__(self, v):
+            self.v = list(v)
+
+    def in_place(q):  # normalises the caller's list in place
+        q[3] = 1.0
+        return q
+
+    def through_object(q):  # a library object built from the input, modified by the library
+        box = rv.watch(Box(q))
+        box.v[0] = -box.v[0]
+        return [0.0, 0.0, 0.0, 1.0]
+
+    clean = rv.call("normalize", identity, [[0.0, 0.0, 0.0, 2.0]])
+    assert clean.modified == "" and "modified_inputs" not in clean.result("NORM-1/normalize/binary64/0001")
+    listed = rv.call("normalize", in_place, [[0.0, 0.0, 0.0, 2.0]])
+    assert "input lists" in listed.modified
+    watched = rv.call("normalize", through_object, [[1.0, 0.0, 0.0, 0.0]])
+    assert "watched input object 0 (Box)" in watched.result("NORM-1/normalize/binary64/0001")["modified_inputs"]

@@ -17,6 +17,8 @@ Public API:
   VectorSet(path), VectorFile, Vector                          the export, read lazily
   call(op, fn, args) -> Outcome                                one call under the status rule
   round_trip(log, exp)                                         EXP-2's log_exp_round_trip
+  watch(*objects)                                              library objects built from the inputs,
+                                                               checked for in-place modification (HYG-1)
   write_results(path, vectors_dir, implementation, results, unsupported), hexfloat, parse_hex
   DidNotReturn, AdapterError, VectorsError, CheckError
 
@@ -33,7 +35,7 @@ from .abi import ABI_OPS, OUTPUTS, ROUND_TRIP
 from .check import Certificate, CheckError, ClauseResult, check
 from .numbers import hexfloat, parse_hex
 from .outcome import (DID_NOT_RETURN, DOMAIN_ERROR, OK, AdapterError, DidNotReturn, Outcome, call,
-                      round_trip)
+                      round_trip, watch)
 from .results import Implementation, results_text, write_results
 from .runner import Run, run, run_adapter, run_file, run_vectors
 from .vectors import Vector, VectorFile, VectorSet, VectorsError
@@ -43,6 +45,6 @@ __version__ = "0.1.0"
 __all__ = [
     "ABI_OPS", "OUTPUTS", "ROUND_TRIP", "Certificate", "CheckError", "ClauseResult", "check", "hexfloat",
     "parse_hex", "DID_NOT_RETURN", "DOMAIN_ERROR", "OK", "AdapterError", "DidNotReturn", "Outcome", "call",
-    "round_trip", "Implementation", "results_text", "write_results", "Run", "run", "run_adapter", "run_file",
+    "round_trip", "watch", "Implementation", "results_text", "write_results", "Run", "run", "run_adapter", "run_file",
     "run_vectors", "Vector", "VectorFile", "VectorSet", "VectorsError", "__version__",
 ]

@@ -17,8 +17,44 @@ refusals: `call` raises AdapterError for them (run_file adds the vector and its 
 certificate grades a typo as a DOMAIN_ERROR.
 """
 import math
+import pickle
 
 from .abi import OUTPUTS
+
+# HYG-1 (inputs are not modified): the inputs handed to the function, and every library object the
+# function builds from them and registers with watch(), are pickled before the call and compared
+# after it, byte for byte.
+_watched = []
+
+
+def _snapshot(o):
+    """The state of an object, to compare after the call: its pickle, or (for an object that does not
+    pickle) the repr of its attributes or of itself."""
+    try:
+        return pickle.dumps(o)
+    except Exception:  # noqa: BLE001 - local classes, C objects without pickle support
+        return repr(vars(o)) if hasattr(o, "__dict__") else repr(o)
+
+
+def watch(*objects):
+    """Registers library objects an op function builds from its inputs (a Quaternion made of the
+    input list, say), so that a library call that modifies them in place is reported (HYG-1).
+    Returns the object (or the tuple of them)."""
+    for o in objects:
+        _watched.append((o, _snapshot(o)))
+    return objects[0] if len(objects) == 1 else objects
+
+
+def _modified(args, args_before):
+    """What the call modified: "" or a sentence naming the input."""
+    if pickle.dumps(args) != args_before:
+        return "the function's input lists were modified"
+    for i, (o, before) in enumerate(_watched):
+        if _snapshot(o) != before:
+            was = pickle.loads(before) if isinstance(before, bytes) else before
+            return "watched input object %d (%s) was modified in place: %r before, %r after" % (
+                i, type(o).__name__, was, o)
+    return ""
 
 OK = "OK"
 DOMAIN_ERROR = "DOMAIN_ERROR"
@@ -48,16 +84,20 @@ class Outcome:
     ({output array name: [floats]}) and, for a refusal, `refusal` (why: the exception's type name,
     "returned None", ...)."""
 
-    __slots__ = ("status", "outputs", "refusal")
+    __slots__ = ("status", "outputs", "refusal", "modified")
 
-    def __init__(self, status, outputs, refusal=None):
-        self.status, self.outputs, self.refusal = status, outputs, refusal
+    def __init__(self, status, outputs, refusal=None, modified=""):
+        self.status, self.outputs, self.refusal, self.modified = status, outputs, refusal, modified
 
     def result(self, vector_id):
-        """The results-file entry of this outcome (conformance/VECTORS.md), values in hexfloat."""
+        """The results-file entry of this outcome (conformance/VECTORS.md), values in hexfloat;
+        `modified_inputs` when the call modified its inputs (HYG-1)."""
         from .numbers import hexfloat
-        return {"id": vector_id, "status": self.status,
-                "out": {name: [hexfloat(x) for x in values] for name, values in self.outputs.items()}}
+        r = {"id": vector_id, "status": self.status,
+             "out": {name: [hexfloat(x) for x in values] for name, values in self.outputs.items()}}
+        if self.modified:
+            r["modified_inputs"] = self.modified
+        return r
 
     def __repr__(self):
         return "Outcome(%r, %r%s)" % (self.status, self.outputs, ", refusal=%r" % self.refusal if self.refusal else "")
@@ -76,8 +116,18 @@ def _flatten(value):
 
 
 def call(op, fn, args):
-    """The Outcome of fn(*args) for ABI op `op` under the status rule (module docstring).
-    Raises AdapterError for a defect of fn."""
+    """The Outcome of fn(*args) for ABI op `op` under the status rule (module docstring), with
+    `modified` set when the call modified its inputs (HYG-1, see watch()). Raises AdapterError for
+    a defect of fn."""
+    del _watched[:]
+    args_before = pickle.dumps(args)
+    outcome = _call(op, fn, args)
+    outcome.modified = _modified(args, args_before)
+    del _watched[:]
+    return outcome
+
+
+def _call(op, fn, args):
     outs = OUTPUTS[op]
     try:
         result = fn(*args)

@@ -70,6 +70,7 @@ class Implementation:
         for key in ("preconditions", "conventions"):
             if getattr(self, key):
                 h[key] = getattr(self, key)
+        h["hygiene"] = ["HYG-1"]  # every call is checked for modified inputs (outcome.watch)
         h.update(self._extra)
         return h
 
