@@ -29,6 +29,7 @@
 #include <LinearMath/btMatrix3x3.h>
 #include <LinearMath/btQuaternion.h>
 #include <LinearMath/btScalar.h>
+#include <LinearMath/btTransform.h>
 #include <LinearMath/btVector3.h>
 
 #include <array>
@@ -88,17 +89,20 @@ struct BulletTable {
           ? "Bullet 3.24 LinearMath (Debian 12, default build bullet.pc: btScalar = float) with no checks added. "
             "btQuaternion(x,y,z,w) = ABI order; Hamilton operator*; inverse() (the conjugate); quatRotate q v q* "
             "(also for bivectors); btMatrix3x3 setRotation/getRotation row-major <-> column-major; getAngle/getAxis "
-            "(together and apart); setRotation(axis, angle); slerp. Status: DOMAIN_ERROR iff every output is NaN."
+            "(together and apart); setRotation(axis, angle); slerp; btTransform (q, t) *, (), inverse(). "
+            "Status: DOMAIN_ERROR iff every output is NaN."
           : "Bullet 3.24 LinearMath (Debian 12, bullet-float64.pc: -DBT_USE_DOUBLE_PRECISION, btScalar = double) with "
             "no checks added. btQuaternion(x,y,z,w) = ABI order; Hamilton operator*; inverse() (the conjugate); "
             "quatRotate q v q* (also for bivectors); btMatrix3x3 setRotation/getRotation row-major <-> column-major; "
-            "getAngle/getAxis (together and apart); setRotation(axis, angle); slerp. Status: DOMAIN_ERROR iff every output is NaN.";
+            "getAngle/getAxis (together and apart); setRotation(axis, angle); slerp; btTransform (q, t) *, (), "
+            "inverse(). Status: DOMAIN_ERROR iff every output is NaN.";
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
       // Core (no APPLY-3: Bullet has no trivector)
       "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
-      // Extended (no SQRT-1: Bullet has no quaternion square root or power; no DQ-7: no dual quaternions)
-      "AXANG-3", "AXANG-4",
+      // Extended (no SQRT-1: Bullet has no quaternion square root or power; no DQ-7, DQ-8, DQ-9: no dual
+      // quaternions, no screw log/exp; RIGID-1..3: btTransform)
+      "AXANG-3", "AXANG-4", "RIGID-1", "RIGID-2", "RIGID-3",
       // Interp (no LOG-*, EXP-*, NLERP-1: Bullet has none of them)
       "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5",
       // Robust (EDGE-9 judges weighted ops only; Bullet has none)
@@ -179,6 +183,31 @@ struct BulletTable {
     q.setRotation(to_bt(axis), angle);
     out = from_bt(q);
     return status_of(out);
+  }
+
+  // ABI version 4: rigid transforms as a Bullet user holds them, btTransform (btTransform.h): built
+  // with btTransform(q, c) (:43, m_basis(q): btMatrix3x3::setRotation, s = 2 / |q|^2, the rotation
+  // of q/|q|; m_origin(c)), x -> m_basis x + m_origin (operator(), :91); composed with operator*
+  // (:231, btTransform(m_basis * t.m_basis, (*this)(t.m_origin)): b applied first), applied with
+  // operator() (:91), inverted with inverse() (:183, btTransform(R^T, R^T * -m_origin)); read back
+  // with getRotation() (:119, btMatrix3x3::getRotation of the basis) and getOrigin().
+  static btTransform to_bt_transform(const Quat<S>& q, const Vec3<S>& t) { return btTransform(to_bt(q), to_bt(t)); }
+  static void from_bt_transform(const btTransform& m, Quat<S>& q, Vec3<S>& t) {
+    q = from_bt(m.getRotation());
+    t = from_bt(m.getOrigin());
+  }
+  static Status rigid_compose(const Quat<S>& qa, const Vec3<S>& ta, const Quat<S>& qb, const Vec3<S>& tb, Quat<S>& q,
+                              Vec3<S>& t) {
+    from_bt_transform(to_bt_transform(qa, ta) * to_bt_transform(qb, tb), q, t);
+    return status_of(q, t);
+  }
+  static Status rigid_apply(const Quat<S>& q, const Vec3<S>& t, const Vec3<S>& p, Vec3<S>& out) {
+    out = from_bt(to_bt_transform(q, t)(to_bt(p)));
+    return status_of(out);
+  }
+  static Status rigid_inverse(const Quat<S>& q_in, const Vec3<S>& t_in, Quat<S>& q, Vec3<S>& t) {
+    from_bt_transform(to_bt_transform(q_in, t_in).inverse(), q, t);
+    return status_of(q, t);
   }
 
   // -- Interp --

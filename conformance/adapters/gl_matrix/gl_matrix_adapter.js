@@ -45,6 +45,11 @@
  *   to_angle         quat.getAxisAngle(vec3.create(), q)      gl-matrix has no angle-only or axis-only
  *   to_axis          axis written by quat.getAxisAngle(axis, q)   call: each is read from the one call
  *   dq_to_rotation_translation   quat2.getReal(quat.create(), d), quat2.getTranslation(vec3.create(), d)
+ *   rigid_compose    M = mat4.multiply(mat4.create(), RT(qa, ta), RT(qb, tb)); mat4.getRotation(quat.create(), M),
+ *                    mat4.getTranslation(vec3.create(), M), RT(q, t) = mat4.fromRotationTranslation(mat4.create(), q, t)
+ *   rigid_apply      vec3.transformMat4(vec3.create(), p, RT(q, t))
+ *   rigid_inverse    M = mat4.invert(mat4.create(), RT(q, t)) (null for a singular matrix: DOMAIN_ERROR);
+ *                    mat4.getRotation, mat4.getTranslation of M
  * Rule: each op is the library call on the input as given: no normalisation, no domain check, no
  * hemisphere flip of our own. What gl-matrix does with a non-unit, zero or non-finite input is graded.
  *
@@ -61,6 +66,7 @@ const {glMatrix, quat, quat2, vec3, mat3, mat4} = glm;
 
 const Q = (q) => quat.fromValues(q[0], q[1], q[2], q[3]);
 const V = (v) => vec3.fromValues(v[0], v[1], v[2]);
+const RT = (q, t) => mat4.fromRotationTranslation(mat4.create(), Q(q), V(t));
 
 const OPS = {
   normalize: (q) => quat.normalize(quat.create(), Q(q)),
@@ -91,6 +97,19 @@ const OPS = {
   dq_to_rotation_translation: (d) => {
     const D = quat2.fromValues(...d);
     return [quat2.getReal(quat.create(), D), quat2.getTranslation(vec3.create(), D)];
+  },
+  // ABI version 4: rigid transforms as a gl-matrix user holds them, a mat4 from
+  // mat4.fromRotationTranslation(out, q, t) (x -> R x + t), composed with mat4.multiply(out, a, b)
+  // (a b: b applied first), applied with vec3.transformMat4, inverted with mat4.invert, read back
+  // with mat4.getRotation / mat4.getTranslation.
+  rigid_compose: (qa, ta, qb, tb) => {
+    const M = mat4.multiply(mat4.create(), RT(qa, ta), RT(qb, tb));
+    return [mat4.getRotation(quat.create(), M), mat4.getTranslation(vec3.create(), M)];
+  },
+  rigid_apply: (q, t, p) => vec3.transformMat4(vec3.create(), V(p), RT(q, t)),
+  rigid_inverse: (q, t) => {
+    const M = mat4.invert(mat4.create(), RT(q, t));
+    return M === null ? null : [mat4.getRotation(quat.create(), M), mat4.getTranslation(vec3.create(), M)];
   },
 };
 

@@ -68,7 +68,20 @@ Operations (what a pytransform3d user calls):
   dq_sclerp        pt.dual_quaternion_sclerp(a, b, t)
   dq_to_rotation_translation   pt.pq_from_dual_quaternion(d) -> (pq[3:] as [x, y, z, w], pq[:3])
   rotate_about_axis pt.dq_prod_vector(pt.dual_quaternion_from_screw_parameters(c, u, 0.0, angle), p)
-Not mapped (NOT_SUPPORTED): pytransform3d 3.17.0 has no quaternion square root, no nlerp, no n-way quaternion or dual-quaternion
+  rigid_compose    pt.pq_from_transform(pt.concat(T(qb, tb), T(qa, ta)))  concat(A2B, B2C) = B2C A2B: its
+                                                          first argument is applied first (its docstring),
+                                                          so b goes first; T(q, t) = pt.transform_from_pq
+                                                          ([tx, ty, tz, w, x, y, z]) (normalises q)
+  rigid_apply      pt.transform(T(q, t), pt.vector_to_point(p))[:3]   the homogeneous point's x, y, z
+  rigid_inverse    pt.pq_from_transform(pt.invert_transform(T(q, t)))
+  dq_log           pt.exponential_coordinates_from_transform(pt.transform_from_dual_quaternion(d)) / 2
+                   the exponential coordinates S theta = (omega theta, v theta) are the twist of
+                   T = exp([S] theta); DQ-8's dual vector is half of them (the dual quaternion of
+                   exp([S] theta) is the dual-quaternion exponential of 1/2 (omega + eps v) theta)
+                   (Log(R) is compact_axis_angle_from_matrix, angle in [0, pi]: where r_w < 0 this
+                   is the log of -sigma, the same motion, declared dq_log:shorter_arc)
+Not mapped (NOT_SUPPORTED): pytransform3d 3.17.0 has no dual-quaternion exponential (dq_exp, see
+adapter.json), no quaternion square root, no nlerp, no n-way quaternion or dual-quaternion
 blend, no skinning, and no bivector or trivector sandwich (its "rotors" are quaternions relabelled
 (a, b_yz, b_zx, b_xy) and act on vectors only): adapter.json says why for each.
 """
@@ -214,6 +227,36 @@ def rotate_about_axis(c, u, angle, p):
     return pt.dq_prod_vector(pt.dual_quaternion_from_screw_parameters(vec(c), vec(u), 0.0, angle), vec(p))
 
 
+# --- ABI version 4 (Extended): rigid transforms as rotation + translation ------------------------
+# pytransform3d holds them as 4x4 matrices A2B built from a position and quaternion (pq, (x, y, z,
+# qw, qx, qy, qz)); transform_from_pq normalises the quaternion (matrix_from_quaternion).
+
+def transform_pq(q, t):
+    x, y, z, w = q
+    tx, ty, tz = t
+    return pt.transform_from_pq(np.array([tx, ty, tz, w, x, y, z], dtype=np.float64))
+
+
+def pq_out(pq):
+    return xyzw(pq[3:]), pq[:3]
+
+
+def rigid_compose(qa, ta, qb, tb):
+    return pq_out(pt.pq_from_transform(pt.concat(transform_pq(qb, tb), transform_pq(qa, ta))))
+
+
+def rigid_apply(q, t, p):
+    return pt.transform(transform_pq(q, t), pt.vector_to_point(vec(p)))[:3]
+
+
+def rigid_inverse(q, t):
+    return pq_out(pt.pq_from_transform(pt.invert_transform(transform_pq(q, t))))
+
+
+def dq_log(d):
+    return pt.exponential_coordinates_from_transform(pt.transform_from_dual_quaternion(dq_in(d))) / 2
+
+
 OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse, "apply_vector": apply_vector,
     "to_matrix": to_matrix, "from_matrix": from_matrix, "to_axis_angle": to_axis_angle,
@@ -223,6 +266,8 @@ OPS = {
     "dq_apply_point": dq_apply_point, "dq_normalize": dq_normalize, "dq_sclerp": dq_sclerp,
     "rotate_about_axis": rotate_about_axis,
     "to_angle": to_angle, "to_axis": to_axis, "dq_to_rotation_translation": dq_to_rotation_translation,
+    "rigid_compose": rigid_compose, "rigid_apply": rigid_apply, "rigid_inverse": rigid_inverse,
+    "dq_log": dq_log,
 }
 
 IMPLEMENTATION = Implementation(
@@ -234,7 +279,7 @@ IMPLEMENTATION = Implementation(
         "pytransform3d %s (PyPI) on float64 numpy arrays: quaternions (w, x, y, z) of pytransform3d.rotations "
         "and dual quaternions (pw, px, py, pz, qw, qx, qy, qz) of pytransform3d.transformations, reordered to the "
         "ABI's [x, y, z, w] / [real xyzw, dual xyzw]; log/exp through the compact axis-angle (rotation vector / 2); "
-        "slerp with shortest_path=True. No status channel: a Python exception raised by pytransform3d is graded "
+        "slerp with shortest_path=True; rigid transforms as transform_from_pq matrices (concat, transform, invert_transform, pq_from_transform). No status channel: a Python exception raised by pytransform3d is graded "
         "DOMAIN_ERROR (outputs NaN), all outputs NaN is DOMAIN_ERROR, anything else OK as computed "
         "(rotorcert_vectors)" % PYTRANSFORM3D_VERSION))
 

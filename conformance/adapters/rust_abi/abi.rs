@@ -1,4 +1,4 @@
-// The rotorcert C ABI, version 3 (impls/include/rotorcert/impl_abi.h), written out in Rust for a
+// The rotorcert C ABI, version 4 (impls/include/rotorcert/impl_abi.h), written out in Rust for a
 // Rust adapter: the table structs with the header's field order, the batch loop with the status
 // rule of RESULT-2, and the panic boundary. One file for every Rust adapter: each crate includes it
 // with `#[path = "../../rust_abi/abi.rs"] mod abi;` (conformance/adapters/rust_abi/, installed and
@@ -27,7 +27,7 @@ use std::panic::{self, AssertUnwindSafe};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Once;
 
-pub const RC_ABI_VERSION: u32 = 3;
+pub const RC_ABI_VERSION: u32 = 4;
 pub const RC_ABI_VERSION_MIN: u32 = 1;
 pub const RC_OK: u8 = 0;
 pub const RC_DOMAIN_ERROR: u8 = 1;
@@ -47,6 +47,9 @@ pub type Fn2<S> = unsafe extern "C" fn(usize, *const S, *const S, *mut S, *mut u
 pub type Fn1x2<S> = unsafe extern "C" fn(usize, *const S, *mut S, *mut S, *mut u8) -> c_int;
 pub type Fn3<S> = unsafe extern "C" fn(usize, *const S, *const S, *const S, *mut S, *mut u8) -> c_int;
 pub type Fn4<S> = unsafe extern "C" fn(usize, *const S, *const S, *const S, *const S, *mut S, *mut u8) -> c_int;
+pub type Fn2x2<S> = unsafe extern "C" fn(usize, *const S, *const S, *mut S, *mut S, *mut u8) -> c_int;
+pub type Fn4x2<S> =
+    unsafe extern "C" fn(usize, *const S, *const S, *const S, *const S, *mut S, *mut S, *mut u8) -> c_int;
 pub type FnBlend<S> = unsafe extern "C" fn(usize, usize, *const S, *const S, *mut S, *mut u8) -> c_int;
 pub type FnSkin<S> =
     unsafe extern "C" fn(usize, usize, *const S, *const S, *const S, *const S, *mut S, *mut u8) -> c_int;
@@ -127,6 +130,29 @@ impl<S: 'static> Ops3<S> {
     pub const NONE: Self = Ops3 { to_angle: None, to_axis: None, sqrt: None, dq_to_rotation_translation: None };
 }
 
+/// RC_DECLARE_OPS4 of impl_abi.h (ABI version 4), field for field: the operations read only from a
+/// table whose abi_version is >= 4, in their own struct (rc_impl.f32_v4 / f64_v4). Layouts: a dual
+/// vector [xi_r xyz, xi_d xyz] (6 scalars); a rigid transform as a quaternion q and a vector t.
+#[repr(C)]
+pub struct Ops4<S: 'static> {
+    /// DQ-8: (d, out_xi)
+    pub dq_log: Option<Fn1<S>>,
+    /// DQ-9: (xi, out_d)
+    pub dq_exp: Option<Fn1<S>>,
+    /// RIGID-1: (qa, ta, qb, tb, out_q, out_t)
+    pub rigid_compose: Option<Fn4x2<S>>,
+    /// RIGID-2: (q, t, p, out_p)
+    pub rigid_apply: Option<Fn3<S>>,
+    /// RIGID-3: (q, t, out_q, out_t)
+    pub rigid_inverse: Option<Fn2x2<S>>,
+}
+
+impl<S: 'static> Ops4<S> {
+    /// Every version-4 operation NOT_SUPPORTED (`..Ops4::NONE`).
+    pub const NONE: Self =
+        Ops4 { dq_log: None, dq_exp: None, rigid_compose: None, rigid_apply: None, rigid_inverse: None };
+}
+
 /// A NULL-terminated list of C strings (clauses, preconditions, conventions).
 #[repr(transparent)]
 pub struct StrList<const N: usize>(pub [*const c_char; N]);
@@ -149,8 +175,8 @@ macro_rules! cstr {
     };
 }
 
-/// rc_impl of impl_abi.h (version 3 layout: the version-2 fields, then f32_v3 / f64_v3, of which
-/// at most the one of `scalar` is set).
+/// rc_impl of impl_abi.h (version 4 layout: the version-2 fields, then f32_v3 / f64_v3, then
+/// f32_v4 / f64_v4, of each pair at most the one of `scalar` is set).
 #[repr(C)]
 pub struct Impl {
     pub abi_version: u32,
@@ -169,6 +195,8 @@ pub struct Impl {
     pub conventions: *const *const c_char,
     pub f32_v3: *const Ops3<f32>,
     pub f64_v3: *const Ops3<f64>,
+    pub f32_v4: *const Ops4<f32>,
+    pub f64_v4: *const Ops4<f64>,
 }
 // SAFETY: a table is immutable and points only to 'static data.
 unsafe impl Sync for Impl {}

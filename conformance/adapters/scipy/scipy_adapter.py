@@ -57,6 +57,15 @@ Operations (what a scipy user calls):
                    documented ScLERP of RigidTransform.__pow__ from A towards B
   to_angle         Rotation.from_quat(q).magnitude()   (the angle in [0, pi])
   dq_to_rotation_translation   t, r = RigidTransform.from_dual_quat(d).as_components(): (r.as_quat(), t)
+  rigid_compose    t, r = (T(qa, ta) * T(qb, tb)).as_components(): (r.as_quat(), t), with
+                   T(q, t) = RigidTransform.from_components(t, Rotation.from_quat(q))
+  rigid_apply      T(q, t).apply(p)
+  rigid_inverse    t', r' = T(q, t).inv().as_components(): (r'.as_quat(), t')
+  dq_log           RigidTransform.from_dual_quat(d).as_exp_coords() / 2: scipy's exponential
+                   coordinates [r, v] are the twist tau with T = exp(tau) (from_exp_coords' doc), the
+                   dual vector of DQ-8 is half of it (exp of the dual quaternion 1/2 (r + eps v) is the
+                   dual quaternion of T, the scaling by 2 of log); its rotation part is as_rotvec's,
+                   angle in [0, pi] (the log of -sigma where r_w < 0, ACC-1 shorter_arc)
 Not mapped (NOT_SUPPORTED; adapter.json says why for each): apply_bivector, apply_trivector (scipy
 has no bivectors or trivectors), to_axis_angle and to_axis (no axis call: magnitude() is the angle
 only), sqrt (no square root: Rotation ** 0.5 is the documented principal root, half of the angle
@@ -219,6 +228,33 @@ def to_angle(q):
     return Rotation.from_quat(q).magnitude()
 
 
+# --- ABI version 4 (Extended): rigid transforms as rotation + translation ------------------------
+# RigidTransform.from_components(translation, rotation) ("the transform first rotates, then
+# translates": x -> R x + t) with Rotation.from_quat (normalises q); * composes ("p * q: q followed
+# by p"); apply, inv; as_components() -> (translation, rotation), the quaternion read with as_quat().
+
+def dq_log(d):
+    return RigidTransform.from_dual_quat(d).as_exp_coords() / 2
+
+
+def rigid(q, t):
+    return RigidTransform.from_components(t, Rotation.from_quat(q))
+
+
+def rigid_compose(qa, ta, qb, tb):
+    t, r = (rigid(qa, ta) * rigid(qb, tb)).as_components()
+    return r.as_quat(), t
+
+
+def rigid_apply(q, t, p):
+    return rigid(q, t).apply(p)
+
+
+def rigid_inverse(q, t):
+    t2, r2 = rigid(q, t).inv().as_components()
+    return r2.as_quat(), t2
+
+
 OPS = {
     "normalize": normalize, "compose": compose, "inverse": inverse, "apply_vector": apply_vector,
     "to_matrix": to_matrix, "from_matrix": from_matrix, "from_axis_angle": from_axis_angle,
@@ -226,6 +262,7 @@ OPS = {
     "dq_from_rotation_translation": dq_from_rotation_translation, "dq_compose": dq_compose,
     "dq_apply_point": dq_apply_point, "dq_normalize": dq_normalize, "dq_sclerp": dq_sclerp,
     "to_angle": to_angle, "dq_to_rotation_translation": dq_to_rotation_translation,
+    "dq_log": dq_log, "rigid_compose": rigid_compose, "rigid_apply": rigid_apply, "rigid_inverse": rigid_inverse,
 }
 
 IMPLEMENTATION = Implementation(
@@ -233,7 +270,7 @@ IMPLEMENTATION = Implementation(
     description=(
         "SciPy %s (PyPI) scipy.spatial.transform on numpy float64: Rotation (from_quat/as_quat "
         "scalar-last, *, inv, apply, as_matrix/from_matrix, as_rotvec/from_rotvec, magnitude), Slerp and "
-        "RigidTransform (dual quaternions, *, apply, ** as ScLERP, as_components). from_quat normalises its input. "
+        "RigidTransform (dual quaternions, *, apply, ** as ScLERP, as_components; from_components/as_components, *, apply, inv for rotation + translation; as_exp_coords / 2 as the dual-quaternion log). from_quat normalises its input. "
         "No status channel: a Python exception raised by scipy is graded DOMAIN_ERROR (outputs NaN), "
         "all outputs NaN is DOMAIN_ERROR, anything else OK as computed (rotorcert_vectors)" % SCIPY_VERSION))
 

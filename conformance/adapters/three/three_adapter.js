@@ -54,6 +54,12 @@ async function loadThree() {
 function makeOps(THREE) {
   const Q = (q) => new THREE.Quaternion(q[0], q[1], q[2], q[3]);
   const V = (v) => new THREE.Vector3(v[0], v[1], v[2]);
+  const RT = (q, t) => new THREE.Matrix4().compose(V(t), Q(q), new THREE.Vector3(1, 1, 1));
+  const split = (m) => {
+    const p = new THREE.Vector3(), r = new THREE.Quaternion(), s = new THREE.Vector3();
+    m.decompose(p, r, s);
+    return [r.toArray(), p.toArray()];
+  };
   return {
     normalize: (q) => Q(q).normalize().toArray(),
     compose: (a, b) => new THREE.Quaternion().multiplyQuaternions(Q(a), Q(b)).toArray(),
@@ -67,6 +73,12 @@ function makeOps(THREE) {
       .setFromRotationMatrix(new THREE.Matrix4().setFromMatrix3(new THREE.Matrix3().fromArray(m))).toArray(),
     from_axis_angle: (angle, axis) => new THREE.Quaternion().setFromAxisAngle(V(axis), angle).toArray(),
     slerp: (a, b, t) => new THREE.Quaternion().slerpQuaternions(Q(a), Q(b), t).toArray(),
+    // ABI version 4: rigid transforms as a three.js user holds them (an Object3D's matrix):
+    // Matrix4.compose(position, quaternion, scale 1) (x -> R x + t), multiplyMatrices(a, b) (a b: b
+    // applied first), Vector3.applyMatrix4, Matrix4.invert, read back with decompose.
+    rigid_compose: (qa, ta, qb, tb) => split(new THREE.Matrix4().multiplyMatrices(RT(qa, ta), RT(qb, tb))),
+    rigid_apply: (q, t, p) => V(p).applyMatrix4(RT(q, t)).toArray(),
+    rigid_inverse: (q, t) => split(RT(q, t).invert()),
   };
 }
 
@@ -77,7 +89,8 @@ function implementation(version) {
     scalar: 'double',
     description:
       'three.js ' + version + ' (npm three, ES module build) THREE.Quaternion, Vector3.applyQuaternion, ' +
-      'Matrix4.makeRotationFromQuaternion and Quaternion.setFromRotationMatrix in JavaScript numbers (binary64), ' +
+      'Matrix4.makeRotationFromQuaternion and Quaternion.setFromRotationMatrix, Matrix4.compose / multiplyMatrices / ' +
+      'invert / decompose and Vector3.applyMatrix4 for rigid transforms, in JavaScript numbers (binary64), ' +
       'through the JSON-vectors adapter conformance/adapters/three; status rule: an exception -> DOMAIN_ERROR, ' +
       'every output NaN -> DOMAIN_ERROR (RESULT-2, three has no status channel), otherwise OK',
   };

@@ -3,7 +3,7 @@
 // the documented "Will panic if ... is not normalized when glam_assert is enabled" assertions are
 // compiled out, as in every default build of a glam user).
 //
-// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 3) with
+// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 4) with
 // two tables named "glam": index 0 binary32 (glam::Quat, Vec3, Mat3; Quat is glam's SSE2 type on
 // x86_64), index 1 binary64 (glam::DQuat, DVec3, DMat3). scripts/setup-adapters builds it with
 // `cargo build --release --locked` into the adapter's environment; `rotorcert thirdparty` loads
@@ -20,6 +20,7 @@ pub mod f32 {
     pub type Q = glam::Quat;
     pub type V = glam::Vec3;
     pub type M = glam::Mat3;
+    pub type A = glam::Affine3A;
     include!("ops.rs");
 }
 
@@ -28,16 +29,18 @@ pub mod f64 {
     pub type Q = glam::DQuat;
     pub type V = glam::DVec3;
     pub type M = glam::DMat3;
+    pub type A = glam::DAffine3;
     include!("ops.rs");
 }
 
 /// Clauses whose operations glam has (no bivectors, trivectors, blends, dual quaternions or
 /// skinning: those levels are not claimed).
-static CLAUSES: StrList<31> = str_list![
+static CLAUSES: StrList<34> = str_list![
     // Core (APPLY-2, APPLY-3: glam has no bivectors or trivectors)
     "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
-    // Extended (no SQRT-1, DQ-7: glam has no square root and no dual quaternions)
-    "AXANG-3", "AXANG-4",
+    // Extended (no SQRT-1, DQ-7, DQ-8, DQ-9: glam has no square root and no dual quaternions;
+    // RIGID-1..3: Affine3A / DAffine3 from_rotation_translation)
+    "AXANG-3", "AXANG-4", "RIGID-1", "RIGID-2", "RIGID-3",
     // Interp
     "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
     // Robust (EDGE-9 judges weighted ops only)
@@ -46,8 +49,11 @@ static CLAUSES: StrList<31> = str_list![
 
 /// DECL-1, glam's documentation (doc comments of src/f32/sse2/quat.rs and src/f64/dquat.rs, the
 /// same text; citations in adapter.json).
-static PRECONDITIONS: StrList<9> = str_list![
+static PRECONDITIONS: StrList<12> = str_list![
     "inverse:unit_quaternion",
+    "rigid_compose:unit_quaternion",
+    "rigid_apply:unit_quaternion",
+    "rigid_inverse:unit_quaternion",
     "apply_vector:unit_quaternion",
     "to_matrix:unit_quaternion",
     "from_matrix:rotation_matrix",
@@ -85,6 +91,8 @@ static TABLE_F32: Impl = Impl {
     conventions: CONVENTIONS.0.as_ptr(),
     f32_v3: &f32::OPS3,
     f64_v3: std::ptr::null(),
+    f32_v4: &f32::OPS4,
+    f64_v4: std::ptr::null(),
 };
 
 static TABLE_F64: Impl = Impl {
@@ -104,6 +112,8 @@ static TABLE_F64: Impl = Impl {
     conventions: CONVENTIONS.0.as_ptr(),
     f32_v3: std::ptr::null(),
     f64_v3: &f64::OPS3,
+    f32_v4: std::ptr::null(),
+    f64_v4: &f64::OPS4,
 };
 
 /// The entry point a rotorcert plugin exports (RC_IMPL_ENTRY_SYMBOL).

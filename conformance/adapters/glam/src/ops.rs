@@ -5,7 +5,7 @@
 // from_scaled_axis) and the ABI's quaternion-view log (angle/2 * axis), an exact scaling by 2.
 // Conventions: adapter.json.
 
-use crate::abi::{run, Answer, Ops, Ops3, Panics, MAX_WIDTH};
+use crate::abi::{run, Answer, Ops, Ops3, Ops4, Panics, MAX_WIDTH};
 use std::ffi::c_int;
 
 const LIB: &str = "glam";
@@ -157,3 +157,61 @@ pub static OPS: Ops<S> = Ops {
 /// The ABI version 3 operations glam has: the halves of to_axis_angle (no square root, no dual
 /// quaternions).
 pub static OPS3: Ops3<S> = Ops3 { to_angle: Some(to_angle), to_axis: Some(to_axis), ..Ops3::NONE };
+
+// ABI version 4: rigid transforms as a glam user holds them, Affine3A / DAffine3 built with
+// from_rotation_translation(rotation, translation) ("Creates an affine transform from the given
+// `rotation` quaternion and `translation` vector", equivalent to from_translation(t) * from_quat(q):
+// x -> R x + t; the rotation must be normalized, declared rigid_*:unit_quaternion); Affine * Affine
+// composes (self * rhs applies rhs first); transform_point3 applies; inverse() inverts the 3x3 part
+// and maps -t; to_scale_rotation_translation() reads the rotation (Quat::from_mat3 of the columns
+// divided by their lengths) and translation back.
+fn affine(q: &Buf, t: &Buf) -> A {
+    A::from_rotation_translation(quat(q), vec3(t))
+}
+fn put_affine(oq: &mut Buf, ot: &mut Buf, m: &A) {
+    let (_scale, r, t) = m.to_scale_rotation_translation();
+    put(oq, &r.to_array());
+    put(ot, &t.to_array());
+}
+
+unsafe extern "C" fn rigid_compose(
+    n: usize,
+    qa: *const S,
+    ta: *const S,
+    qb: *const S,
+    tb: *const S,
+    out_q: *mut S,
+    out_t: *mut S,
+    st: *mut u8,
+) -> c_int {
+    run(LIB, "rigid_compose", n, [(qa, 4), (ta, 3), (qb, 4), (tb, 3)], [(out_q, 4), (out_t, 3)], st, Panics::Defect, |i, o| {
+        let m = affine(&i[0], &i[1]) * affine(&i[2], &i[3]);
+        let (oq, ot) = o.split_at_mut(1);
+        put_affine(&mut oq[0], &mut ot[0], &m);
+        Answer::Value
+    })
+}
+
+unsafe extern "C" fn rigid_apply(n: usize, q: *const S, t: *const S, p: *const S, out: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "rigid_apply", n, [(q, 4), (t, 3), (p, 3)], [(out, 3)], st, Panics::Defect, |i, o| {
+        put(&mut o[0], &affine(&i[0], &i[1]).transform_point3(vec3(&i[2])).to_array());
+        Answer::Value
+    })
+}
+
+unsafe extern "C" fn rigid_inverse(n: usize, q: *const S, t: *const S, out_q: *mut S, out_t: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "rigid_inverse", n, [(q, 4), (t, 3)], [(out_q, 4), (out_t, 3)], st, Panics::Defect, |i, o| {
+        let m = affine(&i[0], &i[1]).inverse();
+        let (oq, ot) = o.split_at_mut(1);
+        put_affine(&mut oq[0], &mut ot[0], &m);
+        Answer::Value
+    })
+}
+
+/// ABI version 4: glam has no dual quaternions and no screw log/exp (DQ-8, DQ-9).
+pub static OPS4: Ops4<S> = Ops4 {
+    rigid_compose: Some(rigid_compose),
+    rigid_apply: Some(rigid_apply),
+    rigid_inverse: Some(rigid_inverse),
+    ..Ops4::NONE
+};

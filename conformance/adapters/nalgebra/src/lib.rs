@@ -1,7 +1,7 @@
 // rotorcert adapter for nalgebra (https://nalgebra.rs), the crate version pinned in Cargo.toml /
 // Cargo.lock, built with its default features (std, macros).
 //
-// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 3) with
+// A cdylib exporting rotorcert_impl_entry (impls/include/rotorcert/impl_abi.h, ABI version 4) with
 // two tables named "nalgebra": index 0 binary32 (UnitQuaternion<f32>, Quaternion<f32>,
 // UnitDualQuaternion<f32>, Isometry3<f32>), index 1 binary64 (the same types over f64).
 // scripts/setup-adapters builds it with `cargo build --release --locked` into the adapter's
@@ -24,12 +24,12 @@ pub mod f64 {
 }
 
 /// Clauses whose operations nalgebra has (no bivectors or trivectors, no blends, no dual-quaternion
-/// blending, no skinning).
-static CLAUSES: StrList<39> = str_list![
+/// blending, no skinning, no dual-quaternion log/exp: DQ-8, DQ-9).
+static CLAUSES: StrList<42> = str_list![
     // Core (APPLY-2, APPLY-3: nalgebra has no bivectors or trivectors)
     "QUAT-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "MAT-1", "MAT-2", "AXANG-1", "AXANG-2",
     // Extended
-    "AXANG-3", "AXANG-4", "SQRT-1", "DQ-7",
+    "AXANG-3", "AXANG-4", "SQRT-1", "DQ-7", "RIGID-1", "RIGID-2", "RIGID-3",
     // Interp
     "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
     // Rigid (DQ-6: no dual-quaternion blending)
@@ -85,6 +85,8 @@ static TABLE_F32: Impl = Impl {
     conventions: CONVENTIONS.0.as_ptr(),
     f32_v3: &f32::OPS3,
     f64_v3: std::ptr::null(),
+    f32_v4: &f32::OPS4,
+    f64_v4: std::ptr::null(),
 };
 
 static TABLE_F64: Impl = Impl {
@@ -104,6 +106,8 @@ static TABLE_F64: Impl = Impl {
     conventions: CONVENTIONS.0.as_ptr(),
     f32_v3: std::ptr::null(),
     f64_v3: &f64::OPS3,
+    f32_v4: std::ptr::null(),
+    f64_v4: &f64::OPS4,
 };
 
 /// The entry point a rotorcert plugin exports (RC_IMPL_ENTRY_SYMBOL).

@@ -6,7 +6,7 @@
 // normalized"), Unit::new_normalize (the idiom of the from_axis_angle docs) and
 // UnitDualQuaternion::new_normalize. Conventions: adapter.json.
 
-use crate::abi::{run, Answer, Ops, Ops3, Panics, MAX_WIDTH};
+use crate::abi::{run, Answer, Ops, Ops3, Ops4, Panics, MAX_WIDTH};
 use nalgebra::{
     DualQuaternion, Isometry3, Matrix3, Point3, Quaternion, Rotation3, Translation3, Unit, UnitDualQuaternion,
     UnitQuaternion, Vector3,
@@ -291,4 +291,61 @@ pub static OPS3: Ops3<S> = Ops3 {
     to_axis: Some(to_axis),
     sqrt: Some(sqrt),
     dq_to_rotation_translation: Some(dq_to_rotation_translation),
+};
+
+/// Isometry3::from_parts(Translation3::from(t), UnitQuaternion::from_quaternion(q)): the isometry
+/// x -> R x + t ("the translation is applied after the rotation", Isometry docs), as a nalgebra user
+/// builds one from a quaternion and a translation.
+fn iso(q: &Buf, t: &Buf) -> Isometry3<S> {
+    Isometry3::from_parts(Translation3::from(vec3(t)), unit(q))
+}
+fn put_iso(oq: &mut Buf, ot: &mut Buf, m: &Isometry3<S>) {
+    put(oq, m.rotation.coords.as_slice());
+    put(ot, m.translation.vector.as_slice());
+}
+
+// Isometry3 * Isometry3 (isometry_ops.rs: rotation a.r * b.r, translation a.t + a.r * b.t):
+// rigid_compose(a, b) = a * b, b applied first.
+unsafe extern "C" fn rigid_compose(
+    n: usize,
+    qa: *const S,
+    ta: *const S,
+    qb: *const S,
+    tb: *const S,
+    out_q: *mut S,
+    out_t: *mut S,
+    st: *mut u8,
+) -> c_int {
+    run(LIB, "rigid_compose", n, [(qa, 4), (ta, 3), (qb, 4), (tb, 3)], [(out_q, 4), (out_t, 3)], st, Panics::Defect, |i, o| {
+        let m = iso(&i[0], &i[1]) * iso(&i[2], &i[3]);
+        let (oq, ot) = o.split_at_mut(1);
+        put_iso(&mut oq[0], &mut ot[0], &m);
+        Answer::Value
+    })
+}
+
+// Isometry3::transform_point: "Transform the given point by this isometry".
+unsafe extern "C" fn rigid_apply(n: usize, q: *const S, t: *const S, p: *const S, out: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "rigid_apply", n, [(q, 4), (t, 3), (p, 3)], [(out, 3)], st, Panics::Defect, |i, o| {
+        put(&mut o[0], iso(&i[0], &i[1]).transform_point(&Point3::from(vec3(&i[2]))).coords.as_slice());
+        Answer::Value
+    })
+}
+
+// Isometry3::inverse: "Inverts self" (rotation r^-1, translation -(r^-1 t)).
+unsafe extern "C" fn rigid_inverse(n: usize, q: *const S, t: *const S, out_q: *mut S, out_t: *mut S, st: *mut u8) -> c_int {
+    run(LIB, "rigid_inverse", n, [(q, 4), (t, 3)], [(out_q, 4), (out_t, 3)], st, Panics::Defect, |i, o| {
+        let m = iso(&i[0], &i[1]).inverse();
+        let (oq, ot) = o.split_at_mut(1);
+        put_iso(&mut oq[0], &mut ot[0], &m);
+        Answer::Value
+    })
+}
+
+/// ABI version 4: nalgebra has no dual-quaternion or isometry logarithm / exponential (DQ-8, DQ-9).
+pub static OPS4: Ops4<S> = Ops4 {
+    rigid_compose: Some(rigid_compose),
+    rigid_apply: Some(rigid_apply),
+    rigid_inverse: Some(rigid_inverse),
+    ..Ops4::NONE
 };
