@@ -39,6 +39,8 @@
  *   dq_compose       PGA: M(a).Mul(M(b))
  *   dq_apply_point   PGA.sw(M(d), P(p))
  *   dq_normalize     PGA: M(d).Normalized  (ganja's closed form M (M ~M)^(-1/2))
+ *   dq_log           PGA: M(d).Log(), its bivector read back by MOTOR-1 as the dual vector (DQ-8)
+ *   dq_exp           PGA: B(xi).Exp(), B the motor bivector of the dual vector (DQ-9)
  * Rule: where ganja has a call for the op, it is called on the mapped input as it is (ganja's
  * sandwich, Log, Inverse, Mul assume nothing and check nothing; what they do with a non-unit, zero or
  * non-finite input is graded). Where ganja has no single call (to_matrix, from_axis_angle,
@@ -96,6 +98,15 @@ function motor(d) {
   return M;
 }
 function dualQuat(M) { return [-M.e23, M.e13, -M.e12, M.s, -M.e01, -M.e02, -M.e03, -M.e0123]; }
+/** The dual vector xi = [xi_r, xi_d] <-> the motor bivector -(xi_r on e23, e31, e12) - (xi_d on e01, e02, e03)
+ *  (MOTOR-1 is linear; e31 = -e13). */
+function motorBivector(xi) {
+  const B = new PGA();
+  B.e23 = -xi[0]; B.e13 = xi[1]; B.e12 = -xi[2];
+  B.e01 = -xi[3]; B.e02 = -xi[4]; B.e03 = -xi[5];
+  return B;
+}
+function dualVector(B) { return [-B.e23, B.e13, -B.e12, -B.e01, -B.e02, -B.e03]; }
 /** The rotor of q embedded in PGA (Q2R-1). */
 function pgaRotor(q) { return motor([q[0], q[1], q[2], q[3], 0, 0, 0, 0]); }
 
@@ -126,6 +137,8 @@ const OPS = {
   dq_compose: (a, b) => dualQuat(motor(a).Mul(motor(b))),
   dq_apply_point: (d, p) => pointCoords(PGA.sw(motor(d), point(p))),
   dq_normalize: (d) => dualQuat(motor(d).Normalized),
+  dq_log: (d) => dualVector(motor(d).Log()),
+  dq_exp: (xi) => dualQuat(motorBivector(xi).Exp()),
 };
 
 const IMPLEMENTATION = {
