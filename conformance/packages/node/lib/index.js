@@ -10,6 +10,7 @@
  *   runAdapter(argv, description, implementation, ops)   an adapter script's command line
  *   check(resultsPath, {rotorcert, out, vectors}) -> Certificate         `rotorcert vectors check`
  *   VectorSet, VectorFile, Vector; call(op, fn, args) -> Outcome; runFile; roundTrip(log, exp)
+ *   watch(...objects): library objects built from the inputs, checked for in-place changes (HYG-1)
  *   writeResults, resultsText, hexfloat, parseHexfloat, decodeValue, checkHexfloat
  *   DidNotReturn, AdapterError, VectorsError, CheckError */
 

@@ -36,20 +36,55 @@ class AdapterError extends Error {
 }
 
 /** What one call gave: status ('OK', 'DOMAIN_ERROR' or a raw status byte), outputs ({name:
- *  numbers}), and for a refusal `refusal` (why: the error's name, 'returned null', ...). */
+ *  numbers}), for a refusal `refusal` (why: the error's name, 'returned null', ...), and `modified`
+ *  when the call modified its inputs (HYG-1, see watch()). */
 class Outcome {
   constructor(status, outputs, refusal = null) {
     this.status = status;
     this.outputs = outputs;
     this.refusal = refusal;
+    this.modified = '';
   }
 
-  /** The results-file entry of this outcome (conformance/VECTORS.md), values in hexfloat. */
+  /** The results-file entry of this outcome (conformance/VECTORS.md), values in hexfloat;
+   *  `modified_inputs` when the call modified its inputs (HYG-1). */
   result(vectorId) {
     const out = {};
     for (const [name, values] of Object.entries(this.outputs)) out[name] = values.map(hexfloat);
-    return {id: vectorId, status: this.status, out};
+    const r = {id: vectorId, status: this.status, out};
+    if (this.modified) r.modified_inputs = this.modified;
+    return r;
   }
+}
+
+// HYG-1 (inputs are not modified): the arguments handed to the function, and every library object
+// the function builds from them and registers with watch(), are serialised before the call and
+// compared after it (every number exactly: -0, NaN and typed arrays included).
+const watched = [];
+function snapshot(x) {
+  return JSON.stringify(x, (k, v) => {
+    if (typeof v === 'number') return Object.is(v, -0) ? '-0' : String(v);
+    if (ArrayBuffer.isView(v)) return Array.from(v, (c) => (Object.is(c, -0) ? '-0' : String(c)));
+    return v;
+  });
+}
+
+/** Registers library objects an op function builds from its inputs (a THREE.Quaternion made of
+ *  the input array, say), so that a library call that modifies them in place is reported (HYG-1).
+ *  Returns the first object. */
+function watch(...objects) {
+  for (const o of objects) watched.push([o, snapshot(o)]);
+  return objects[0];
+}
+
+function modifiedInputs(args, before) {
+  if (snapshot(args) !== before) return "the function's input arrays were modified";
+  for (let i = 0; i < watched.length; ++i) {
+    const [o, was] = watched[i];
+    const now = snapshot(o);
+    if (now !== was) return `watched input object ${i} (${(o && o.constructor && o.constructor.name) || typeof o}) was modified in place: ${was} before, ${now} after`;
+  }
+  return '';
 }
 
 function nanOutputs(op) {
@@ -65,9 +100,18 @@ function flatten(v) {
 
 function fnName(fn, op) { return (fn && fn.name) || op; }
 
-/** The Outcome of fn(...args) for ABI op `op` under the status rule; throws AdapterError for a
- *  defect of fn. */
+/** The Outcome of fn(...args) for ABI op `op` under the status rule, with `modified` set when the
+ *  call modified its inputs (HYG-1); throws AdapterError for a defect of fn. */
 function call(op, fn, args) {
+  watched.length = 0;
+  const before = snapshot(args);
+  const outcome = callOnce(op, fn, args);
+  outcome.modified = modifiedInputs(args, before);
+  watched.length = 0;
+  return outcome;
+}
+
+function callOnce(op, fn, args) {
   const outs = OUTPUTS[op];
   let result;
   try {
@@ -112,4 +156,4 @@ function roundTrip(log, exp) {
   };
 }
 
-module.exports = {OK, DOMAIN_ERROR, DID_NOT_RETURN, DidNotReturn, AdapterError, Outcome, call, roundTrip};
+module.exports = {OK, DOMAIN_ERROR, DID_NOT_RETURN, DidNotReturn, AdapterError, Outcome, call, roundTrip, watch};

@@ -64,6 +64,7 @@ class Implementation {
     if (this.claimedLevels) h.claimed_levels = [...this.claimedLevels];
     if (this.preconditions.length) h.preconditions = [...this.preconditions];
     if (this.conventions.length) h.conventions = [...this.conventions];
+    h.hygiene = ['HYG-1'];  // every call is checked for modified inputs (outcome.watch)
     return Object.assign(h, this._extra || {});
   }
 }

@@ -22,6 +22,9 @@ const GOLDEN = `{
     ],
     "preconditions": [
       "slerp:t_in_unit_interval"
+    ],
+    "hygiene": [
+      "HYG-1"
     ]
   },
   "vectors": "vectors",
@@ -131,4 +134,15 @@ test('reader: k elements per influence, and the vector named in a defect', () =>
   } finally {
     fs.rmSync(dir, {recursive: true, force: true});
   }
+});
+
+test('a call that modifies its inputs is reported (HYG-1)', () => {
+  const clean = rv.call('normalize', (q) => q.slice(), [[0, 0, 0, 2]]);
+  assert.strictEqual(clean.modified, '');
+  assert.ok(!('modified_inputs' in clean.result('NORM-1/normalize/binary64/0001')));
+  const inPlace = rv.call('normalize', (q) => { q[3] = 1; return q; }, [[0, 0, 0, 2]]);
+  assert.match(inPlace.modified, /input arrays/);
+  class Box { constructor(v) { this.v = Array.from(v); } }
+  const viaObject = rv.call('normalize', (q) => { const b = rv.watch(new Box(q)); b.v[0] = -0; return [0, 0, 0, 1]; }, [[0, 0, 0, 1]]);
+  assert.match(viaObject.result('NORM-1/normalize/binary64/0001').modified_inputs, /watched input object 0 \(Box\)/);
 });
