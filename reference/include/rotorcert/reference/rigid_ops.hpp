@@ -124,12 +124,19 @@ DualQuaternion<T> from_rotation_translation(const Quaternion<T>& q, const Vec3<T
 template <class T>
 Vec3<T> translation_of_unit(const DualQuaternion<T>& u) { return vector_part(T(2) * (u.dual * conj(u.real))); }
 
+/// R v as the sandwich u v u* of a unit quaternion u.
 template <class T>
-Vec3<T> apply_unit(const DualQuaternion<T>& u, const Vec3<T>& p) {
-  const Vec3<T> rp = vector_part(u.real * pure(p) * conj(u.real));
-  const Vec3<T> t = translation_of_unit(u);
+Vec3<T> rotated(const Quaternion<T>& u, const Vec3<T>& v) { return vector_part(u * pure(v) * conj(u)); }
+
+/// The rigid motion x -> R x + t of a unit rotation u and a translation t, applied to p.
+template <class T>
+Vec3<T> moved(const Quaternion<T>& u, const Vec3<T>& t, const Vec3<T>& p) {
+  const Vec3<T> rp = rotated(u, p);
   return {rp[0] + t[0], rp[1] + t[1], rp[2] + t[2]};
 }
+
+template <class T>
+Vec3<T> apply_unit(const DualQuaternion<T>& u, const Vec3<T>& p) { return moved(u.real, translation_of_unit(u), p); }
 
 /// Screw power sigma^tau of a unit dual quaternion whose real part has w >= 0, by its screw
 /// parameters (dual angle theta + eps d, dual axis l + eps m, Kavan et al. 2008):
@@ -355,17 +362,14 @@ Result<RotationTranslation<T>> RIGID_1_compose(const Quaternion<T>& qa, const Ve
                                                const Vec3<T>& tb) {
   if (!rigid::valid(qa) || !rigid::valid(qb) || !finite(ta) || !finite(tb)) return domain_error<RotationTranslation<T>>();
   const Quaternion<T> ua = rigid::unit(qa), ub = rigid::unit(qb);
-  const Vec3<T> moved = rigid::vector_part(ua * rigid::pure(tb) * conj(ua));
-  return {{ua * ub, {moved[0] + ta[0], moved[1] + ta[1], moved[2] + ta[2]}}, Status::ok};
+  return {{ua * ub, rigid::moved(ua, ta, tb)}, Status::ok};
 }
 
 /// RIGID-2: p' = R p + t with R the rotation of q/|q| (the motion of DQ-3 for sigma = DQ-1(q, t)).
 template <class T>
 Result<Vec3<T>> RIGID_2_apply(const Quaternion<T>& q, const Vec3<T>& t, const Vec3<T>& p) {
   if (!rigid::valid(q) || !finite(t) || !finite(p)) return domain_error<Vec3<T>>();
-  const Quaternion<T> u = rigid::unit(q);
-  const Vec3<T> rp = rigid::vector_part(u * rigid::pure(p) * conj(u));
-  return {{rp[0] + t[0], rp[1] + t[1], rp[2] + t[2]}, Status::ok};
+  return {rigid::moved(rigid::unit(q), t, p), Status::ok};
 }
 
 /// RIGID-3: the inverse transform x -> R^-1 (x - t): (q^*, -R^-1 t).
@@ -373,7 +377,7 @@ template <class T>
 Result<RotationTranslation<T>> RIGID_3_inverse(const Quaternion<T>& q, const Vec3<T>& t) {
   if (!rigid::valid(q) || !finite(t)) return domain_error<RotationTranslation<T>>();
   const Quaternion<T> inv = conj(rigid::unit(q));
-  const Vec3<T> back = rigid::vector_part(inv * rigid::pure(t) * conj(inv));
+  const Vec3<T> back = rigid::rotated(inv, t);
   return {{inv, {-back[0], -back[1], -back[2]}}, Status::ok};
 }
 
