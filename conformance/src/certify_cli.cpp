@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -10,7 +11,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include <rotorcert/certify/interrupt.hpp>
 #include <rotorcert/spec/data_layout.hpp>
+
+#include "commands.hpp"
 
 namespace rotorcert::cli {
 
@@ -30,6 +34,9 @@ void add_certify_options(CLI::App& app, CertifyCli& o) {
   app.add_option("--spec", o.spec_dir, "Spec directory (default: $ROTORCERT_SPEC_DIR or the built-in one)");
   app.add_flag("--verbose,-v", o.verbose, "Print every clause, PASS included");
   app.add_flag("--quiet,-q", o.quiet, "No progress line and no certificate on stdout (the report is still written)");
+  app.add_flag("--resume", o.resume,
+               "Continue the interrupted run whose journal (certify-journal.jsonl) is in --out, without redoing "
+               "finished clauses; the options must be the same");
 }
 
 certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o) {
@@ -67,6 +74,38 @@ bool load_spec_and_options(const char* command, const CertifyCli& o, spec::Spec&
   } catch (const std::exception& e) {  // SpecError, or a bad --level / --clause
     std::cerr << "rotorcert " << command << ": " << e.what() << '\n';
     return false;
+  }
+}
+
+std::optional<std::vector<certify::Certificate>> certify_resumably(const char* command, const CertifyCli& o,
+                                                                   const spec::Spec& spec,
+                                                                   const std::vector<certify::Target>& targets,
+                                                                   certify::CertifyOptions& options,
+                                                                   std::unique_ptr<certify::Journal>& journal, int& code) {
+  try {
+    std::filesystem::create_directories(o.out);
+    journal = std::make_unique<certify::Journal>(certify::Journal::file_in(o.out),
+                                                 certify::run_identity(spec, targets, options), o.resume);
+  } catch (const std::exception& e) {
+    std::cerr << "rotorcert " << command << ": " << e.what() << '\n';
+    code = kExitUsage;
+    return std::nullopt;
+  }
+  if (o.resume && !o.quiet)
+    std::cout << "resuming: " << journal->resumable() << " clauses finished before the interruption are not run again\n";
+  options.journal = journal.get();
+  certify::InterruptGuard guard;
+  try {
+    std::vector<certify::Certificate> certs = certify::certify_targets(spec, targets, options);
+    if (const int sig = certify::interruption(); sig != 0) throw certify::Interrupted(sig);
+    return certs;
+  } catch (const certify::Interrupted& e) {
+    if (options.progress) std::fputs("\r\033[K", stderr);
+    std::cerr << "rotorcert " << command << ": interrupted by " << certify::signal_name(e.signal)
+              << "; the report in " << o.out << " is unchanged. The clauses finished so far are in "
+              << journal->file().string() << "; continue with the same command and --resume\n";
+    code = 128 + e.signal;
+    return std::nullopt;
   }
 }
 

@@ -25,6 +25,7 @@ struct CertifyCli {
   std::string out;
   std::optional<std::string> spec_dir;
   bool verbose = false, quiet = false;
+  bool resume = false;  // RESULT-4: continue the interrupted run whose journal is in --out
 };
 
 /// Adds the shared options to a subcommand.
@@ -38,6 +39,17 @@ certify::CertifyOptions make_options(const spec::Spec& spec, const CertifyCli& o
 /// returns false (the caller exits with kExitUsage).
 bool load_spec_and_options(const char* command, const CertifyCli& o, spec::Spec& spec,
                            certify::CertifyOptions& options);
+
+/// Certifies `targets` with the journal of --out (RESULT-4, journal.hpp): each finished clause is
+/// recorded as it comes, --resume keeps what an interrupted run finished, and Ctrl-C or SIGTERM
+/// ends every child and returns nothing, leaving the previous report as it was. On nothing,
+/// `code` is the exit code (128 + the signal; kExitUsage when the journal cannot be used) and the
+/// reason has been printed. The journal stays open in `journal` until the report is written.
+std::optional<std::vector<certify::Certificate>> certify_resumably(const char* command, const CertifyCli& o,
+                                                                   const spec::Spec& spec,
+                                                                   const std::vector<certify::Target>& targets,
+                                                                   certify::CertifyOptions& options,
+                                                                   std::unique_ptr<certify::Journal>& journal, int& code);
 
 /// The report's run object: date, host, duration, command line.
 certify::json run_json(double seconds, const std::string& command, int jobs);

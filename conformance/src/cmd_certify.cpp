@@ -91,10 +91,15 @@ int run(const Args& a) {
     return kExitUsage;
   }
 
-  const auto certs = certify::certify_targets(spec, targets, options);
+  std::unique_ptr<certify::Journal> journal;
+  int interrupted_code = 0;
+  const auto certified = certify_resumably("certify", a.common, spec, targets, options, journal, interrupted_code);
+  if (!certified) return interrupted_code;
+  const std::vector<certify::Certificate>& certs = *certified;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   certify::json report =
       certify::report_json(spec, "certify", certify::options_json(options), run_json(seconds, command_line(), options.jobs), certs);
+  if (a.common.resume) report["run"]["resumed_clauses"] = journal->taken();
   if (!a.required_levels.empty() || a.require_claimed_levels) {
     certify::json required = a.required_levels;
     if (a.require_claimed_levels) required.push_back("claimed");
@@ -105,6 +110,7 @@ int run(const Args& a) {
     for (const certify::Certificate& c : certs) certify::print_certificate(std::cout, c, a.common.verbose);
   try {
     certify::write_report(a.common.out, report);
+    journal->remove();  // the run is complete: nothing left to resume
   } catch (const std::exception& e) {
     std::cerr << "rotorcert certify: cannot write the report: " << e.what() << '\n';
     return kExitUsage;

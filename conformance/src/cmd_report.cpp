@@ -166,11 +166,16 @@ int run(const Args& a) {
     }
   }
 
-  const auto certs = certify::certify_targets(spec, targets, options);
+  std::unique_ptr<certify::Journal> journal;
+  int interrupted_code = 0;
+  const auto certified = certify_resumably("report", a.common, spec, targets, options, journal, interrupted_code);
+  if (!certified) return interrupted_code;
+  const std::vector<certify::Certificate>& certs = *certified;
   const std::vector<certify::Certificate> builtin(certs.begin(), certs.begin() + static_cast<std::ptrdiff_t>(builtin_count));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   certify::json report =
       certify::report_json(spec, "report", certify::options_json(options), run_json(seconds, command_line(), options.jobs), builtin);
+  if (a.common.resume) report["run"]["resumed_clauses"] = journal->taken();
   if (mutants_note.empty()) {
     certify::json section = mutants_section(mutants, certs, builtin_count, a.mutant_dir);
     if (section.at("killed") != section.at("total")) report["summary"]["exit_code"] = 1;
@@ -281,6 +286,7 @@ int run(const Args& a) {
   }
   try {
     certify::write_report(a.common.out, report);
+    journal->remove();  // the run is complete: nothing left to resume
   } catch (const std::exception& e) {
     std::cerr << "rotorcert report: cannot write the report: " << e.what() << '\n';
     return kExitUsage;

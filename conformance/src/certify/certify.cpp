@@ -170,6 +170,7 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
     c.levels = options.levels;
     if (targets[t].plugin_path.empty()) c.expected_failures = expected_failures(c.table.name, c.table.scalar);
     const std::vector<std::string>& clauses = targets[t].clauses.empty() ? all_clauses : targets[t].clauses;
+    const std::string key = table_key(targets[t]);
     for (const std::string& id : clauses) {
       const spec::Clause* cl = spec.find_clause(id);
       ClauseResult r;
@@ -184,6 +185,12 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
         r.note = "not claimed by the implementation";
       }
       c.reproduce[id] = reproduce_command(options, targets[t], id);
+      if (const Journal::Entry* finished = run && options.journal ? options.journal->take(key, id) : nullptr) {
+        // Finished before an interruption (--resume): not run again.
+        c.clauses.push_back(finished->result);
+        if (c.fp_environment.is_null() && !finished->fp_environment.empty()) c.fp_environment = finished->fp_environment;
+        continue;
+      }
       c.clauses.push_back(r);
       if (run) {
         submit({t, c.clauses.size() - 1, id, false, {}});
@@ -220,6 +227,7 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
         r.note += "; run again one case at a time, it did not recur (the fault depends on the batch)";
       }
       slot = std::move(r);
+      if (options.journal) options.journal->record(table_key(targets[job.target]), slot, environment);
     } else {
       const bool timeout = out.kind == ChildOutcome::Kind::timed_out;
       const ChildOutcome& first = job.pinpoint ? job.first : out;
@@ -247,12 +255,36 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
         again.first = out;
         submit(again);
         ++total;
+      } else if (options.journal) {
+        options.journal->record(table_key(targets[job.target]), slot, json::object());
       }
     }
     ++done;
     show_progress(options, done, total, c.table.name + " " + c.table.scalar + " " + job.clause);
   }
   return certs;
+}
+
+std::string table_key(const Target& t) {
+  std::string key = t.info.name + "/" + t.info.scalar;
+  if (!t.plugin_path.empty()) key += "@" + t.plugin_path + "#" + std::to_string(t.plugin_index);
+  return key;
+}
+
+json run_identity(const spec::Spec& spec, const std::vector<Target>& targets, const CertifyOptions& o) {
+  json tables = json::array();
+  for (const Target& t : targets)
+    tables.push_back({{"key", table_key(t)}, {"version", t.info.version}, {"clauses", t.clauses}});
+  return {{"rotorcert_version", ROTORCERT_VERSION},
+          {"spec_version", spec.version},
+          {"seed", o.cases.seed},
+          {"cases_per_family", o.cases.cases_per_family},
+          {"search_budget", o.cases.search_budget},
+          {"levels", o.levels},
+          {"clauses", o.clauses},
+          {"run_unclaimed", o.run_unclaimed},
+          {"detect_conventions", o.detect_conventions},
+          {"tables", tables}};
 }
 
 json options_json(const CertifyOptions& o) {

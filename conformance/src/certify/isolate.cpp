@@ -1,5 +1,6 @@
 #include <rotorcert/certify/isolate.hpp>
 
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -20,6 +21,8 @@
 #include <stdexcept>
 #include <string_view>
 #include <vector>
+
+#include <rotorcert/certify/interrupt.hpp>
 
 namespace rotorcert::certify {
 namespace {
@@ -319,6 +322,8 @@ void ChildPool::start(std::size_t id, Task task) {
       ::setrlimit(RLIMIT_AS, &rl);
     }
     ::signal(SIGPIPE, SIG_DFL);
+    ::signal(SIGINT, SIG_DFL);  // not the parent's recording handlers (interrupt.hpp)
+    ::signal(SIGTERM, SIG_DFL);
     ChildChannel channel(channel_fd);
     int code = 0;
     try {
@@ -350,6 +355,9 @@ void ChildPool::start(std::size_t id, Task task) {
 std::pair<std::size_t, ChildOutcome> ChildPool::wait_any() {
   if (running_.empty()) throw std::logic_error("ChildPool::wait_any with nothing running");
   for (;;) {
+    // Ctrl-C or SIGTERM (RESULT-4): no outcome of a half-finished child counts; the destructor
+    // ends every running group.
+    if (const int sig = interruption(); sig != 0) throw Interrupted(sig);
     // A child is done when it has exited and been reaped: not when its channel closes, since
     // a process it forked may hold the channel open, nor must a child that closed its channel
     // and goes on be taken for finished.

@@ -10,6 +10,7 @@
 
 #include <rotorcert/certify/certificate.hpp>
 #include <rotorcert/certify/isolate.hpp>
+#include <rotorcert/certify/journal.hpp>
 #include <rotorcert/engine/cases.hpp>
 #include <rotorcert/spec/spec.hpp>
 
@@ -41,6 +42,7 @@ struct CertifyOptions {
   bool detect_conventions = true;
   bool progress = false;                       // a progress line on stderr (a terminal)
   std::string reproduce_prefix = "rotorcert";  // how the reproduce commands call the tool
+  Journal* journal = nullptr;                  // RESULT-4: finished clauses recorded, resumed ones not run
 };
 
 /// Every built-in table.
@@ -60,5 +62,12 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
 
 /// The options object of report.json for these options.
 json options_json(const CertifyOptions& options);
+
+/// What identifies a certification for --resume (journal.hpp): versions, the options that decide
+/// results, and the tables.
+json run_identity(const spec::Spec& spec, const std::vector<Target>& targets, const CertifyOptions& options);
+
+/// The journal's name of a target: "name/scalar", with the plugin path and table index for a plugin.
+std::string table_key(const Target& t);
 
 }  // namespace rotorcert::certify
