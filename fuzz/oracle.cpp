@@ -221,11 +221,6 @@ bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case&
   return false;
 }
 
-/// Decides how much of an element is judged: the reference is evaluated on the inputs perturbed
-/// (perturbed() above), its outputs rounded to the format
-/// and judged by the same judge_case. A status that changes under perturbation: nothing is
-/// judged (the input sits on the domain boundary, e.g. det M = 0 within rounding). Outputs that
-/// move beyond the strict bar, or values without headroom: only the status.
 /// MAT-3: |det M| <= 8u per(|M|), where the format cannot decide the sign of det M (Shewchuk's
 /// bound on a floating-point 3x3 determinant). Either outcome conforms there, so nothing is judged.
 bool numerically_singular(const std::vector<Real>& m, const Real& u) {
@@ -243,10 +238,15 @@ bool numerically_singular(const std::vector<Real>& m, const Real& u) {
   return abs(det) <= Real(8) * u * per;
 }
 
-Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
+/// Decides how much of an element is judged: the reference is evaluated on the inputs perturbed
+/// (perturbed() above), its outputs rounded to the format
+/// and judged by the same judge_case. A status that changes under perturbation: nothing is
+/// judged (the input sits on the domain boundary, e.g. det M = 0 within rounding). Outputs that
+/// move beyond the strict bar, or values without headroom: only the status.
+Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
+                   const engine::ReferenceResult& want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   if (op.name == "from_matrix" && numerically_singular(c.inputs.at(0), u)) return Judge::nothing;
-  const engine::ReferenceResult want = op.reference(c.inputs, c.k);
   bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f);
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
@@ -258,8 +258,9 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
     o.outputs = r.outputs;
     for (auto& arr : o.outputs)
       for (Real& x : arr) x = engine::round_to(f, x);
-    const engine::CaseVerdict v = engine::judge_case(op, tc, c, o, f);
-    if (std::getenv("ROTORCERT_FUZZ_DEBUG"))
+    const bool debug = std::getenv("ROTORCERT_FUZZ_DEBUG") != nullptr;
+    const engine::CaseVerdict v = engine::judge_case_against(op, tc, c, o, f, want, debug);
+    if (debug)
       std::fprintf(stderr, "perturbation %d: %g eps (%s)\n", pattern, v.error, v.detail.c_str());
     if (v.verdict != ref::Verdict::pass) numbers = false;
   }
@@ -364,10 +365,10 @@ int check(const Decoded& d) {
 
   // Per element: the reference status and how much is judged (the same for every table).
   std::vector<Judge> judge(d.n);
-  std::vector<ref::Status> want(d.n);
+  std::vector<engine::ReferenceResult> want(d.n);
   for (std::size_t e = 0; e < d.n; ++e) {
-    want[e] = op.reference(d.cases[e].inputs, d.k).status;
-    judge[e] = how_to_judge(op, tc, d.cases[e], f);
+    want[e] = op.reference(d.cases[e].inputs, d.k);
+    judge[e] = how_to_judge(op, tc, d.cases[e], f, want[e]);
     ++stats().counts[op.name][static_cast<std::size_t>(judge[e])];
   }
 
@@ -378,7 +379,7 @@ int check(const Decoded& d) {
     const std::vector<Observed> got = call_raw(*t, op, d.n, d.k, d.raw);
     for (std::size_t e = 0; e < d.n; ++e) {
       if (judge[e] == Judge::everything) {
-        const engine::CaseVerdict v = engine::judge_case(op, tc, d.cases[e], got[e], f);
+        const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.cases[e], got[e], f, want[e], false);
         if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
       } else if (judge[e] == Judge::status_only && (got[e].call_rc != 0 || got[e].status != RC_OK)) {
         finding(*t, d, e, "ill-conditioned input inside the domain: status OK required", tol_name,
@@ -406,7 +407,7 @@ int check(const Decoded& d) {
       const std::vector<Observed> back = call_raw(*t, exp_op, d.n, 0, raw);
       const std::string rt_name = engine::tolerance_for(s, "EXP-2", "log");
       for (std::size_t e = 0; e < d.n; ++e) {
-        if (want[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
+        if (want[e].status != ref::Status::ok || judge[e] == Judge::nothing) continue;
         const engine::CaseVerdict v = engine::judge_round_trip(s.lookup(rt_name), d.cases[e], got[e], back[e], f);
         if (v.verdict == ref::Verdict::fail) {
           engine::CaseVerdict shown = v;

@@ -169,6 +169,13 @@ ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& 
 CaseVerdict judge_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got,
                        ref::Format f, const Convention* convention = nullptr, const Declarations* declared = nullptr);
 
+/// judge_case without a convention, against the reference result `want` of c.inputs computed by
+/// the caller (the fuzz oracle evaluates it once per element and judges every table and every
+/// perturbation against it). With `detail` false a PASS leaves CaseVerdict::detail empty (its
+/// decimal text costs more than the judging).
+CaseVerdict judge_case_against(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got,
+                               ref::Format f, const ReferenceResult& want, bool detail = true);
+
 /// EXP-2: judges exp(log q) = q, given what log returned (`log_got`) and what exp returned when
 /// fed that (`exp_got`). c is the log case.
 CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, const Observed& log_got,
