@@ -7,12 +7,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <optional>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
 #include <rotorcert/engine/abi_op.hpp>
 #include <rotorcert/engine/cases.hpp>
+#include <rotorcert/engine/fast_oracle.hpp>
 #include <rotorcert/reference/scalar.hpp>
 #include <rotorcert/registry.hpp>
 
@@ -243,6 +245,21 @@ bool numerically_singular(const std::vector<Real>& m, const Real& u) {
 /// and judged by the same judge_case. A status that changes under perturbation: nothing is
 /// judged (the input sits on the domain boundary, e.g. det M = 0 within rounding). Outputs that
 /// move beyond the strict bar, or values without headroom: only the status.
+/// An interpolation parameter multiplies the implementation's own rounding of the angle between
+/// the endpoints, which no perturbation of the inputs shows when the angle is a multiple of
+/// pi / 2 and t an even integer (every binary64 beyond 2^54): one unit roundoff of that angle
+/// moves the result by |t| u, so beyond the strict bar only the status is judged (SLERP-4).
+bool t_beyond_strict_bar(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
+  const auto strict = tc.strict_value();
+  if (tc.kind != "eps" || !strict) return false;
+  const Real u = ref::format_epsilon<Real>(f) / Real(2);
+  for (std::size_t a = 0; a < op.inputs.size(); ++a)
+    if (op.inputs[a].name == "t")
+      for (const Real& t : c.inputs[a])
+        if (mpfr::isfinite(t) && abs(t) * u > *strict * ref::format_epsilon<Real>(f)) return true;
+  return false;
+}
+
 Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
                    const engine::ReferenceResult& want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
@@ -264,16 +281,7 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
       std::fprintf(stderr, "perturbation %d: %g eps (%s)\n", pattern, v.error, v.detail.c_str());
     if (v.verdict != ref::Verdict::pass) numbers = false;
   }
-  // An interpolation parameter multiplies the implementation's own rounding of the angle between
-  // the endpoints, which no perturbation of the inputs shows when the angle is a multiple of
-  // pi / 2 and t an even integer (every binary64 beyond 2^54): one unit roundoff of that angle
-  // moves the result by |t| u, so beyond the strict bar only the status is judged (SLERP-4).
-  const auto strict = tc.strict_value();
-  if (numbers && tc.kind == "eps" && strict)
-    for (std::size_t a = 0; a < op.inputs.size(); ++a)
-      if (op.inputs[a].name == "t")
-        for (const Real& t : c.inputs[a])
-          if (mpfr::isfinite(t) && abs(t) * u > *strict * ref::format_epsilon<Real>(f)) numbers = false;
+  if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (want.status == ref::Status::domain_error || numbers) return Judge::everything;
   // MAT-3's domain is the sign of a cubic in the entries: without headroom the format cannot
   // decide it, so the status is not judged either.
@@ -281,14 +289,92 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
   return Judge::status_only;
 }
 
+/// how_to_judge from the fast level (engine/fast_oracle.hpp): the same decisions, each taken only
+/// where the bounds settle it; nullopt sends the element to MPFR. A perturbed result counts as
+/// within the bar only where fast_passes says so, and its rounding to the format only where the
+/// whole interval rounds to one value, so a decided answer is the one how_to_judge gives.
+std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
+                                       const engine::FastReference& want) {
+  const Real u = ref::format_epsilon<Real>(f) / Real(2);
+  const bool ok = want.status == ref::Status::ok;
+  if (ok) {  // within_headroom reads the outputs' magnitudes: keep clear of its threshold
+    const long double edge = std::ldexp(1.0L, (f == ref::Format::binary32 ? 127 : 1023) - 9);
+    for (const auto& arr : want.outputs)
+      for (const ref::Bounded& y : arr)
+        if (std::isfinite(y.value()) && std::fabs(y.value()) + y.bound() >= edge) return std::nullopt;
+  }
+  bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f);
+  static const bool debug = std::getenv("ROTORCERT_FUZZ_DEBUG") != nullptr;
+  auto decline = [&](const char* why) -> std::optional<Judge> {
+    if (debug) std::fprintf(stderr, "fast oracle: %s: %s\n", op.name.c_str(), why);
+    return std::nullopt;
+  };
+  Case p;
+  for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
+    const auto r = engine::fast_reference(op, p.inputs, c.k);
+    if (!r) return decline("a perturbed reference is undecided");
+    if (r->status != want.status) return Judge::nothing;
+    if (!numbers) continue;
+    Observed o;
+    o.status = RC_OK;
+    const auto rounded = engine::fast_rounded(*r, f);
+    if (!rounded) return decline("a perturbed result straddles a rounding point");
+    o.outputs = *rounded;
+    const auto v = engine::fast_verdicts(op, tc, c, o, f, want);
+    if (v && v->worst == ref::Verdict::pass) continue;
+    // Surely beyond the strict bar is "not PASS" as MPFR judges it unless an acceptable
+    // convention could make it an ACCEPTABLE PASS.
+    if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op)) {
+      numbers = false;
+      continue;
+    }
+    return decline(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded");
+  }
+  if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
+  if (!ok || numbers) return Judge::everything;
+  return Judge::status_only;
+}
+
+/// Which level answers (ROTORCERT_FUZZ_ORACLE): "fast" (the default: the fast level where it
+/// decides, MPFR elsewhere), "mpfr" (MPFR only), or "both" (both everywhere, and any difference
+/// is a finding: the agreement check on fuzzed inputs).
+enum class OracleMode { fast, mpfr, both };
+OracleMode oracle_mode() {
+  static const OracleMode mode = [] {
+    const char* env = std::getenv("ROTORCERT_FUZZ_ORACLE");
+    const std::string m = env ? env : "fast";
+    if (m == "mpfr") return OracleMode::mpfr;
+    if (m == "both") return OracleMode::both;
+    if (m != "fast") std::fprintf(stderr, "ROTORCERT_FUZZ_ORACLE=%s: not fast, mpfr or both; using fast\n", m.c_str());
+    return OracleMode::fast;
+  }();
+  return mode;
+}
+
+[[noreturn]] void oracle_disagreement(const Decoded& d, std::size_t e, const std::string& what) {
+  std::fprintf(stderr,
+               "\n==== rotorcert fuzz finding ====\n"
+               "the fast oracle and MPFR disagree (ROTORCERT_FUZZ_ORACLE=both)\n"
+               "op:             %s (element %zu of n = %zu, k = %zu)\n"
+               "what:           %s\n"
+               "inputs:         %s\n"
+               "raw bits:       %s\n"
+               "================================\n",
+               d.op->name.c_str(), e, d.n, d.k, what.c_str(),
+               engine::describe_inputs(*d.op, d.cases[e], d.format()).c_str(), raw_words(d, e).c_str());
+  std::abort();
+}
+
 /// With ROTORCERT_FUZZ_STATS set: per op, how many elements were judged how (printed at exit),
 /// to see how much of what a harness generates is judged in full.
 struct Stats {
   std::map<std::string, std::array<std::size_t, 3>> counts;
+  std::map<std::string, std::size_t> fast;  // elements the fast level judged without MPFR
   ~Stats() {
     if (std::getenv("ROTORCERT_FUZZ_STATS") == nullptr) return;
     for (const auto& [op, c] : counts)
-      std::fprintf(stderr, "stats: %-28s everything %8zu  status only %8zu  nothing %8zu\n", op.c_str(), c[0], c[1], c[2]);
+      std::fprintf(stderr, "stats: %-28s everything %8zu  status only %8zu  nothing %8zu  without MPFR %8zu\n",
+                   op.c_str(), c[0], c[1], c[2], fast.count(op) ? fast.at(op) : std::size_t{0});
   }
 };
 Stats& stats() {
@@ -316,7 +402,7 @@ std::vector<std::string> clauses_judging(const std::string& op) {
   return r;
 }
 
-std::string fuzz_tolerance(const std::string& op) {
+std::string fuzz_tolerance_uncached(const std::string& op) {
   const spec::Spec& s = embedded_spec();
   std::string best;
   double best_loose = -1;
@@ -336,7 +422,17 @@ std::string fuzz_tolerance(const std::string& op) {
   return best;
 }
 
-bool eligible(const rc_impl& table, const std::string& op, std::string* why) {
+/// Memoised per op: the spec does not change during a run.
+std::string fuzz_tolerance(const std::string& op) {
+  static std::map<std::string, std::string> cache;
+  static std::mutex m;
+  const std::lock_guard<std::mutex> lock(m);
+  auto it = cache.find(op);
+  if (it == cache.end()) it = cache.emplace(op, fuzz_tolerance_uncached(op)).first;
+  return it->second;
+}
+
+bool eligible_uncached(const rc_impl& table, const std::string& op, std::string* why) {
   if (!engine::supports(table, op)) {
     if (why) *why = "no such op";
     return false;
@@ -355,6 +451,16 @@ bool eligible(const rc_impl& table, const std::string& op, std::string* why) {
   return true;
 }
 
+bool eligible(const rc_impl& table, const std::string& op, std::string* why) {
+  if (why != nullptr) return eligible_uncached(table, op, why);
+  static std::map<std::pair<const rc_impl*, std::string>, bool> cache;  // built-in tables live as long
+  static std::mutex m;
+  const std::lock_guard<std::mutex> lock(m);
+  auto it = cache.find({&table, op});
+  if (it == cache.end()) it = cache.emplace(std::make_pair(&table, op), eligible_uncached(table, op, nullptr)).first;
+  return it->second;
+}
+
 int check(const Decoded& d) {
   init();
   const spec::Spec& s = embedded_spec();
@@ -363,13 +469,34 @@ int check(const Decoded& d) {
   const std::string tol_name = fuzz_tolerance(op.name);
   const spec::ToleranceClass& tc = s.lookup(tol_name);
 
-  // Per element: the reference status and how much is judged (the same for every table).
+  // Per element: the reference status and how much is judged (the same for every table), from
+  // the fast level where it decides; the MPFR reference is computed only where it is needed.
+  const OracleMode mode = oracle_mode();
   std::vector<Judge> judge(d.n);
-  std::vector<engine::ReferenceResult> want(d.n);
+  std::vector<ref::Status> status(d.n);
+  std::vector<std::optional<engine::FastReference>> fast(d.n);
+  std::vector<std::optional<engine::ReferenceResult>> exact(d.n);
+  auto mpfr_want = [&](std::size_t e) -> const engine::ReferenceResult& {
+    if (!exact[e]) exact[e] = op.reference(d.cases[e].inputs, d.k);
+    return *exact[e];
+  };
   for (std::size_t e = 0; e < d.n; ++e) {
-    want[e] = op.reference(d.cases[e].inputs, d.k);
-    judge[e] = how_to_judge(op, tc, d.cases[e], f, want[e]);
+    std::optional<Judge> j;
+    if (mode != OracleMode::mpfr) fast[e] = engine::fast_reference(op, d.cases[e].inputs, d.k);
+    if (fast[e]) j = how_to_judge_fast(op, tc, d.cases[e], f, *fast[e]);
+    if (!j || mode == OracleMode::both) {
+      const Judge m = how_to_judge(op, tc, d.cases[e], f, mpfr_want(e));
+      if (j && *j != m)
+        oracle_disagreement(d, e, "how much is judged: fast " + std::to_string(static_cast<int>(*j)) + ", MPFR " +
+                                      std::to_string(static_cast<int>(m)));
+      if (fast[e] && mode == OracleMode::both && fast[e]->status != mpfr_want(e).status)
+        oracle_disagreement(d, e, "the reference status");
+      j = m;
+    }
+    judge[e] = *j;
+    status[e] = fast[e] ? fast[e]->status : mpfr_want(e).status;
     ++stats().counts[op.name][static_cast<std::size_t>(judge[e])];
+    if (fast[e] && j && !exact[e]) ++stats().fast[op.name];
   }
 
   int tables = 0;
@@ -379,7 +506,16 @@ int check(const Decoded& d) {
     const std::vector<Observed> got = call_raw(*t, op, d.n, d.k, d.raw);
     for (std::size_t e = 0; e < d.n; ++e) {
       if (judge[e] == Judge::everything) {
-        const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.cases[e], got[e], f, want[e], false);
+        // Surely within the loose bar is never a FAIL: MPFR's verdict is PASS or QUALITY_WARNING,
+        // which an acceptable convention can only turn into an ACCEPTABLE PASS.
+        const auto fv = fast[e] ? engine::fast_verdicts(op, tc, d.cases[e], got[e], f, *fast[e]) : std::nullopt;
+        if (fv && fv->worst != ref::Verdict::fail) {
+          if (mode == OracleMode::both &&
+              engine::judge_case_against(op, tc, d.cases[e], got[e], f, mpfr_want(e), false).verdict == ref::Verdict::fail)
+            oracle_disagreement(d, e, std::string("the verdict on ") + t->name + ": fast not FAIL, MPFR FAIL");
+          continue;
+        }
+        const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.cases[e], got[e], f, mpfr_want(e), false);
         if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
       } else if (judge[e] == Judge::status_only && (got[e].call_rc != 0 || got[e].status != RC_OK)) {
         finding(*t, d, e, "ill-conditioned input inside the domain: status OK required", tol_name,
@@ -407,7 +543,7 @@ int check(const Decoded& d) {
       const std::vector<Observed> back = call_raw(*t, exp_op, d.n, 0, raw);
       const std::string rt_name = engine::tolerance_for(s, "EXP-2", "log");
       for (std::size_t e = 0; e < d.n; ++e) {
-        if (want[e].status != ref::Status::ok || judge[e] == Judge::nothing) continue;
+        if (status[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
         const engine::CaseVerdict v = engine::judge_round_trip(s.lookup(rt_name), d.cases[e], got[e], back[e], f);
         if (v.verdict == ref::Verdict::fail) {
           engine::CaseVerdict shown = v;

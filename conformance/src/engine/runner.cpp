@@ -98,34 +98,37 @@ std::string join_values(const std::vector<Real>& v, bool hexfloat, ref::Format f
 
 namespace {
 
-Quat quat(const std::vector<Real>& a) { return {a[3], a[0], a[1], a[2]}; }
-ref::DualQuaternion<Real> dq(const std::vector<Real>& a) { return {{a[3], a[0], a[1], a[2]}, {a[7], a[4], a[5], a[6]}}; }
+template <class T>
+ref::Quaternion<T> quat(const std::vector<T>& a) { return {a[3], a[0], a[1], a[2]}; }
+template <class T>
+ref::DualQuaternion<T> dq(const std::vector<T>& a) { return {{a[3], a[0], a[1], a[2]}, {a[7], a[4], a[5], a[6]}}; }
 
-Real norm(const std::vector<Real>& v) {
-  Real s(0);
-  for (const Real& x : v) s += x * x;
+template <class T>
+T norm(const std::vector<T>& v) {
+  T s(0);
+  for (const T& x : v) s += x * x;
   return sqrt(s);
 }
 
 /// The error of one output array in the unit of its measure (radians, relative, ...).
-Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& want, const Real& scale,
-             const Real& tiny) {
+template <class T>
+T measure(Measure m, const std::vector<T>& got, const std::vector<T>& want, const T& scale, const T& tiny) {
   using std::max;
   switch (m) {
     case Measure::rotation: return clause::METRIC_1_rotation_distance(quat(got), quat(want));
     case Measure::quaternion: {
-      Real worst(0);
-      for (int i = 0; i < 4; ++i) worst = max(worst, Real(abs(got[i] - want[i])));
-      const Real relative = worst / norm(want);
-      if (mpfr::isnan(relative)) return relative;
+      T worst(0);
+      for (int i = 0; i < 4; ++i) worst = max(worst, T(abs(got[i] - want[i])));
+      const T relative = worst / norm(want);
+      if (ref::ScalarTraits<T>::is_nan(relative)) return relative;
       return max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), relative);
     }
     case Measure::unit_rotation:
       return max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got)));
     case Measure::signed_unit_rotation: {
-      Real worst(0);
-      for (int i = 0; i < 4; ++i) worst = max(worst, Real(abs(got[i] - want[i])));
-      if (mpfr::isnan(worst)) return worst;
+      T worst(0);
+      for (int i = 0; i < 4; ++i) worst = max(worst, T(abs(got[i] - want[i])));
+      if (ref::ScalarTraits<T>::is_nan(worst)) return worst;
       return max(max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got))),
                  worst);
     }
@@ -133,21 +136,21 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
       // MAT-2: q and -q are one rotation, but from_matrix has one answer, w > 0. A result on the
       // other side of the reference (negative dot product) is off by |w_ref|: within the bar (a
       // half turn, w near 0) either sign passes, beyond it the wrong sign fails.
-      const Real rotation =
+      const T rotation =
           max(clause::METRIC_1_rotation_distance(quat(got), quat(want)), clause::METRIC_6_norm_defect(quat(got)));
-      const Real dot = got[0] * want[0] + got[1] * want[1] + got[2] * want[2] + got[3] * want[3];
-      return dot < 0 ? max(rotation, Real(abs(want[3]))) : rotation;
+      const T dot = got[0] * want[0] + got[1] * want[1] + got[2] * want[2] + got[3] * want[3];
+      return dot < 0 ? max(rotation, T(abs(want[3]))) : rotation;
     }
     case Measure::vector:
-      return clause::METRIC_3_vector_error<Real>({got[0], got[1], got[2]}, {want[0], want[1], want[2]}, tiny);
+      return clause::METRIC_3_vector_error<T>({got[0], got[1], got[2]}, {want[0], want[1], want[2]}, tiny);
     case Measure::point: {  // every component of the array: a point, or DQ-8's dual vector
-      std::vector<Real> d;
+      std::vector<T> d;
       for (std::size_t i = 0; i < want.size() && i < got.size(); ++i) d.push_back(got[i] - want[i]);
       return norm(d) / scale;
     }
-    case Measure::bivector: return clause::METRIC_5_bivector_error<Real>({got[0], got[1], got[2]}, {want[0], want[1], want[2]});
+    case Measure::bivector: return clause::METRIC_5_bivector_error<T>({got[0], got[1], got[2]}, {want[0], want[1], want[2]});
     case Measure::matrix: {
-      ref::Mat3<Real> a, b;
+      ref::Mat3<T> a, b;
       std::copy(got.begin(), got.end(), a.begin());
       std::copy(want.begin(), want.end(), b.begin());
       return clause::METRIC_4_matrix_error(a, b);
@@ -159,21 +162,21 @@ Real measure(Measure m, const std::vector<Real>& got, const std::vector<Real>& w
       return max(e.rotation, e.translation);
     }
     case Measure::dual_parts: {
-      Real real(0), dual(0);
-      for (int i = 0; i < 4; ++i) real = max(real, Real(abs(got[i] - want[i])));
+      T real(0), dual(0);
+      for (int i = 0; i < 4; ++i) real = max(real, T(abs(got[i] - want[i])));
       for (int i = 4; i < 8; ++i) dual += (got[i] - want[i]) * (got[i] - want[i]);
-      if (mpfr::isnan(real) || mpfr::isnan(dual)) return ref::ScalarTraits<Real>::nan();
-      return max(max(real, Real(sqrt(dual) / scale)), clause::METRIC_6_norm_defect(dq(got).real));
+      if (ref::ScalarTraits<T>::is_nan(real) || ref::ScalarTraits<T>::is_nan(dual)) return ref::ScalarTraits<T>::nan();
+      return max(max(real, T(sqrt(dual) / scale)), clause::METRIC_6_norm_defect(dq(got).real));
     }
     case Measure::unit_rigid: {
       const auto e = clause::METRIC_7_rigid_error(dq(got), dq(want));
       const auto g = dq(got);
       const auto t = clause::dual_quaternion_translation(dq(want));
-      const Real orthogonality = abs(ref::dot(g.real, g.dual)) / max(Real(1), sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]));
+      const T orthogonality = abs(ref::dot(g.real, g.dual)) / max(T(1), sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]));
       return max(max(e.rotation, e.translation), max(clause::METRIC_6_norm_defect(g.real), orthogonality));
     }
   }
-  return ref::ScalarTraits<Real>::nan();
+  return ref::ScalarTraits<T>::nan();
 }
 
 bool all_nan(const std::vector<Real>& v) {
@@ -189,9 +192,15 @@ ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& 
     const Real delta = op.name == "from_matrix" ? orthogonality_defect(c.inputs[0]) : Real(0);
     return {(Real(16) + Real(2) * delta / eps).toDouble(), (Real(256) + Real(8) * delta / eps).toDouble()};
   }
+  // The bars of the other classes are constant expressions: parsed once per thread and class.
+  static thread_local std::map<std::string, ref::Bars> parsed;
+  const std::string key = tc.kind + '\n' + tc.strict.value_or("") + '\n' + tc.loose.value_or("");
+  if (const auto it = parsed.find(key); it != parsed.end()) return it->second;
   const auto strict = tc.strict_value(), loose = tc.loose_value();
-  if (!strict || !loose) return {0, 0};  // a class without numeric bars accepts no numeric error
-  return {strict->toDouble(), loose->toDouble()};
+  // A class without numeric bars accepts no numeric error.
+  const ref::Bars bars = strict && loose ? ref::Bars{strict->toDouble(), loose->toDouble()} : ref::Bars{0, 0};
+  parsed.emplace(key, bars);
+  return bars;
 }
 
 namespace {
@@ -379,14 +388,36 @@ CaseVerdict judge_round_trip(const spec::ToleranceClass& tc, const Case& c, cons
           "exp(log q) = " + join_values(got, false, f) + ", q = " + join_values(c.inputs[0], false, f)};
 }
 
-Real output_error(const AbiOp& op, const Values& got, const Values& want, const Case& c, ref::Format f) {
-  const Real scale = op.scale(c.inputs, c.k);
-  Real e(0);
+namespace {
+
+/// The largest error over the output arrays; NaN wins.
+template <class T>
+T largest_output_error(const AbiOp& op, const std::vector<std::vector<T>>& got, const std::vector<std::vector<T>>& want,
+                       const T& scale, const T& tiny) {
+  using Traits = ref::ScalarTraits<T>;
+  T e(0);
   for (std::size_t a = 0; a < op.outputs.size(); ++a) {
-    const Real ea = measure(op.outputs[a].measure, got[a], want[a], scale, ref::format_min_normal<Real>(f));
-    if (mpfr::isnan(ea) || ea > e || mpfr::isnan(e)) e = ea;
+    const T ea = measure(op.outputs[a].measure, got[a], want[a], scale, tiny);
+    if constexpr (std::is_same_v<T, Real>) {
+      if (Traits::is_nan(ea) || Traits::is_nan(e) || ea > e) e = ea;
+    } else {  // Bounded: max is continuous, a comparison of two nearby errors would be undecided
+      if (Traits::is_nan(ea)) return ea;  // the fast level leaves NaN errors to MPFR
+      e = max(e, ea);
+    }
   }
   return e;
+}
+
+}  // namespace
+
+Real output_error(const AbiOp& op, const Values& got, const Values& want, const Case& c, ref::Format f) {
+  return largest_output_error(op, got, want, op.scale(c.inputs, c.k), ref::format_min_normal<Real>(f));
+}
+
+ref::Bounded output_error_bounded(const AbiOp& op, const std::vector<std::vector<ref::Bounded>>& got,
+                                  const std::vector<std::vector<ref::Bounded>>& want, const ref::Bounded& scale,
+                                  const ref::Bounded& tiny) {
+  return largest_output_error(op, got, want, scale, tiny);
 }
 
 namespace {

@@ -21,6 +21,7 @@
 #include <rotorcert/engine/convention.hpp>
 #include <rotorcert/engine/declarations.hpp>
 #include <rotorcert/impl_abi.h>
+#include <rotorcert/reference/bounded.hpp>
 #include <rotorcert/reference/tolerance.hpp>
 #include <rotorcert/spec/spec.hpp>
 
@@ -158,6 +159,12 @@ std::vector<Observed> observe(const rc_impl& table, const AbiOp& op, const std::
 /// The error of an implementation's outputs against reference outputs, in the unit of the op's
 /// measures (radians, relative; the largest over the output arrays; NaN if any is NaN).
 Real output_error(const AbiOp& op, const Values& got, const Values& want, const Case& c, ref::Format f);
+
+/// output_error by the same measures in the fast oracle's Bounded arithmetic (fast_oracle.hpp),
+/// with the case's scale and the format's smallest normal given.
+ref::Bounded output_error_bounded(const AbiOp& op, const std::vector<std::vector<ref::Bounded>>& got,
+                                  const std::vector<std::vector<ref::Bounded>>& want, const ref::Bounded& scale,
+                                  const ref::Bounded& tiny);
 
 /// Strict and loose bars of class `tc` for one case, in the unit errors are compared in.
 ref::Bars bars_for(const spec::ToleranceClass& tc, const AbiOp& op, const Case& c, const Real& eps);

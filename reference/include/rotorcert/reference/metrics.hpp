@@ -75,7 +75,8 @@ T METRIC_3_vector_error(const Vec3<T>& v, const Vec3<T>& ref, const T& tiny = T(
   using std::sqrt;
   T d(0), r(0);
   for (int i = 0; i < 3; ++i) {
-    d += (v[i] - ref[i]) * (v[i] - ref[i]);
+    const T di = v[i] - ref[i];  // one object squared: a Bounded knows the square is >= 0
+    d += di * di;
     r += ref[i] * ref[i];
   }
   return r == 0 ? sqrt(d) : sqrt(d) / max(sqrt(r), tiny);
@@ -99,7 +100,10 @@ template <class T>
 T METRIC_5_bivector_error(const Vec3<T>& b, const Vec3<T>& ref) {
   using std::sqrt;
   T d(0);
-  for (int i = 0; i < 3; ++i) d += (b[i] - ref[i]) * (b[i] - ref[i]);
+  for (int i = 0; i < 3; ++i) {
+    const T di = b[i] - ref[i];
+    d += di * di;
+  }
   return sqrt(d);
 }
 

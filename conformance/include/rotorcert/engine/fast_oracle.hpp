@@ -1,0 +1,69 @@
+// The fast level of the two-level oracle (issue #21; fuzz/README.md, "The fast oracle").
+//
+// The reference's clause templates are evaluated in ref::Bounded (reference/bounded.hpp): an x87
+// extended value with a rigorous bound on its distance from the exact result. A judgement is
+// taken from it only where the bound decides it; everything else (a bound too wide, a branch the
+// bound cannot settle, a verdict other than PASS) goes to the 256-bit MPFR reference, so the
+// verdicts are MPFR's by construction. conformance/tests/test_fast_oracle.cpp checks every bound
+// against MPFR on the suite's own cases, and the fuzz harnesses can run both levels side by side
+// (ROTORCERT_FUZZ_ORACLE=both) and stop on any difference.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <rotorcert/engine/abi_op.hpp>
+#include <rotorcert/engine/cases.hpp>
+#include <rotorcert/engine/runner.hpp>
+#include <rotorcert/reference/bounded.hpp>
+
+namespace rotorcert::engine {
+
+using BoundedValues = std::vector<std::vector<ref::Bounded>>;
+
+/// A reference result in Bounded arithmetic: the exact result lies within each component's bound.
+struct FastReference {
+  ref::Status status = ref::Status::ok;
+  BoundedValues outputs;
+};
+
+/// Whether `op` has a fast reference (the closed-form ops; from_matrix's iterative eigenvector
+/// and the series-based ops have none).
+bool has_fast_reference(const std::string& op);
+
+/// The reference of `op` on exact inputs in Bounded arithmetic. nullopt when op has no fast
+/// reference or the evaluation met an undecided event (BoundedScope).
+std::optional<FastReference> fast_reference(const AbiOp& op, const Values& inputs, std::size_t k);
+
+/// The exact value nearest to each fast output (for the checks that read magnitudes).
+Values fast_values(const FastReference& r);
+
+/// The outputs rounded to the format, where every component's interval rounds to one value of the
+/// format (so the exact reference rounds to it too); nullopt where one straddles a rounding point.
+std::optional<Values> fast_rounded(const FastReference& r, ref::Format f);
+
+/// The TOL-1 verdicts at the two ends of an interval that holds the exact error of `got`: the
+/// numeric verdict judge_case_against(op, tc, c, got, f, exact reference) starts from lies between
+/// `best` and `worst`. nullopt where the fast level cannot bound the error, or where the judgement
+/// is not a plain numeric one (a wrong status, a domain error, an exact class): MPFR's to judge.
+struct FastVerdicts {
+  ref::Verdict best, worst;
+};
+std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c,
+                                          const Observed& got, ref::Format f, const FastReference& want);
+
+/// Whether judge_case_against is certainly PASS: fast_verdicts' worst is PASS.
+bool fast_passes(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got, ref::Format f,
+                 const FastReference& want);
+
+/// Whether an acceptable convention (ACC-1) that needs no declaration applies to `op` inside its
+/// domain: judge_case_against may then turn a numeric QUALITY_WARNING or FAIL into an ACCEPTABLE
+/// PASS, which only MPFR decides.
+bool may_be_acceptable(const AbiOp& op);
+
+/// For the agreement test only: a deliberately broken fast level, which the test must catch.
+enum class FastOracleMutation { none, bound_too_small, wrong_term };
+void set_fast_oracle_mutation(FastOracleMutation m);
+
+}  // namespace rotorcert::engine

@@ -1,0 +1,253 @@
+#include <rotorcert/engine/fast_oracle.hpp>
+
+#include <cfloat>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <span>
+
+#include <rotorcert/engine/declarations.hpp>
+#include <rotorcert/reference/rigid_ops.hpp>
+#include <rotorcert/reference/rotation_ops.hpp>
+
+namespace rotorcert::engine {
+namespace {
+
+using ref::Bounded;
+using BQuat = ref::Quaternion<Bounded>;
+using BV3 = ref::Vec3<Bounded>;
+using BDQ = ref::DualQuaternion<Bounded>;
+using BoundedArray = std::vector<Bounded>;
+namespace clause = ref::clause;
+
+FastOracleMutation g_mutation = FastOracleMutation::none;
+
+/// An input of the format, or a perturbed one (fuzz oracle): exact in long double, or the nearest
+/// long double with its rounding as the bound.
+Bounded from_real(const Real& x) {
+  const long double v = x.toLDouble();
+  if (!std::isfinite(v) || Real(v) == x) return {v, 0};
+  return Bounded::result(v, 0, 0.5L);
+}
+
+// ---- ABI layout <-> reference types, as in abi_ops.cpp, in Bounded ----------------------------
+
+BQuat quat(const BoundedArray& a, std::size_t i = 0) { return {a[i * 4 + 3], a[i * 4], a[i * 4 + 1], a[i * 4 + 2]}; }
+BV3 vec3(const BoundedArray& a, std::size_t i = 0) { return {a[i * 3], a[i * 3 + 1], a[i * 3 + 2]}; }
+BDQ dq(const BoundedArray& a, std::size_t i = 0) {
+  return {{a[i * 8 + 3], a[i * 8], a[i * 8 + 1], a[i * 8 + 2]}, {a[i * 8 + 7], a[i * 8 + 4], a[i * 8 + 5], a[i * 8 + 6]}};
+}
+template <class V, class F>
+std::vector<V> many(const BoundedArray& a, std::size_t k, F unpack) {
+  std::vector<V> r;
+  for (std::size_t i = 0; i < k; ++i) r.push_back(unpack(a, i));
+  return r;
+}
+
+BoundedArray flat(const BQuat& q) { return {q.x, q.y, q.z, q.w}; }
+BoundedArray flat(const BV3& v) { return {v[0], v[1], v[2]}; }
+BoundedArray flat(const BDQ& d) { return {d.real.x, d.real.y, d.real.z, d.real.w, d.dual.x, d.dual.y, d.dual.z, d.dual.w}; }
+BoundedArray flat(const ref::Mat3<Bounded>& m) { return {m.begin(), m.end()}; }
+BoundedArray flat(const Bounded& s) { return {s}; }
+
+template <class V>
+FastReference one(const ref::Result<V>& r) {
+  return {r.status, {flat(r.value)}};
+}
+FastReference pair(const ref::Result<ref::RotationTranslation<Bounded>>& r) {
+  return {r.status, {flat(r.value.q), flat(r.value.t)}};
+}
+
+using FastFn = std::function<FastReference(const BoundedValues& in, std::size_t k)>;
+
+/// The closed-form ops: the same clause templates as abi_ops.cpp's MPFR lambdas. Not here:
+/// from_matrix (an iterative eigenvector), sqrt and dq_to_rotation_translation (engine-side
+/// references), dq_log and dq_exp, and blend_log and rotate_about_axis, whose references take
+/// exact-zero branches (the log of the pivot's own rotor, the PGA sandwich) that a bound cannot
+/// settle: the fast level decided under a quarter of their cases.
+const std::map<std::string, FastFn>& fast_ops() {
+  static const std::map<std::string, FastFn> ops = {
+      {"normalize", [](const BoundedValues& in, std::size_t) { return one(clause::NORM_1_normalize(quat(in[0]))); }},
+      {"compose",
+       [](const BoundedValues& in, std::size_t) { return one(clause::COMPOSE_1_compose(quat(in[0]), quat(in[1]))); }},
+      {"inverse", [](const BoundedValues& in, std::size_t) { return one(clause::INV_1_inverse(quat(in[0]))); }},
+      {"apply_vector",
+       [](const BoundedValues& in, std::size_t) { return one(clause::APPLY_1_apply_vector(quat(in[0]), vec3(in[1]))); }},
+      {"apply_bivector",
+       [](const BoundedValues& in, std::size_t) { return one(clause::APPLY_2_apply_bivector(quat(in[0]), vec3(in[1]))); }},
+      {"apply_trivector",
+       [](const BoundedValues& in, std::size_t) { return one(clause::APPLY_3_apply_trivector(quat(in[0]), in[1][0])); }},
+      {"to_matrix", [](const BoundedValues& in, std::size_t) { return one(clause::MAT_1_to_matrix(quat(in[0]))); }},
+      {"to_axis_angle",
+       [](const BoundedValues& in, std::size_t) {
+         const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));
+         return FastReference{r.status, {flat(r.value.angle), flat(r.value.axis)}};
+       }},
+      {"to_angle",
+       [](const BoundedValues& in, std::size_t) {
+         const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));
+         return FastReference{r.status, {flat(r.value.angle)}};
+       }},
+      {"to_axis",
+       [](const BoundedValues& in, std::size_t) {
+         const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));
+         return FastReference{r.status, {flat(r.value.axis)}};
+       }},
+      {"from_axis_angle",
+       [](const BoundedValues& in, std::size_t) { return one(clause::AXANG_2_from_axis_angle(in[0][0], vec3(in[1]))); }},
+      {"log", [](const BoundedValues& in, std::size_t) { return one(clause::LOG_1_log(quat(in[0]))); }},
+      {"exp", [](const BoundedValues& in, std::size_t) { return one(clause::EXP_1_exp(vec3(in[0]))); }},
+      {"slerp",
+       [](const BoundedValues& in, std::size_t) {
+         return one(clause::SLERP_1_slerp(quat(in[0]), quat(in[1]), in[2][0]));
+       }},
+      {"nlerp",
+       [](const BoundedValues& in, std::size_t) {
+         return one(clause::NLERP_1_nlerp(quat(in[0]), quat(in[1]), in[2][0]));
+       }},
+      {"blend_qlb",
+       [](const BoundedValues& in, std::size_t k) {
+         const auto qs = many<BQuat>(in[0], k, [](const BoundedArray& a, std::size_t i) { return quat(a, i); });
+         return one(clause::QLB_1_blend(std::span<const BQuat>(qs), std::span<const Bounded>(in[1])));
+       }},
+      {"dq_from_rotation_translation",
+       [](const BoundedValues& in, std::size_t) {
+         return one(clause::DQ_1_from_rotation_translation(quat(in[0]), vec3(in[1])));
+       }},
+      {"dq_compose", [](const BoundedValues& in, std::size_t) { return one(clause::DQ_2_compose(dq(in[0]), dq(in[1]))); }},
+      {"dq_apply_point",
+       [](const BoundedValues& in, std::size_t) { return one(clause::DQ_3_apply_point(dq(in[0]), vec3(in[1]))); }},
+      {"dq_normalize", [](const BoundedValues& in, std::size_t) { return one(clause::DQ_4_normalize(dq(in[0]))); }},
+      {"dq_sclerp",
+       [](const BoundedValues& in, std::size_t) { return one(clause::DQ_5_sclerp(dq(in[0]), dq(in[1]), in[2][0])); }},
+      {"dq_blend",
+       [](const BoundedValues& in, std::size_t k) {
+         const auto ds = many<BDQ>(in[0], k, [](const BoundedArray& a, std::size_t i) { return dq(a, i); });
+         return one(clause::DQ_6_dlb(std::span<const BDQ>(ds), std::span<const Bounded>(in[1])));
+       }},
+      {"skin_linear",
+       [](const BoundedValues& in, std::size_t k) {
+         const auto qs = many<BQuat>(in[0], k, [](const BoundedArray& a, std::size_t i) { return quat(a, i); });
+         const auto ts = many<BV3>(in[1], k, [](const BoundedArray& a, std::size_t i) { return vec3(a, i); });
+         return one(clause::SKIN_1_linear_blend(std::span<const BQuat>(qs), std::span<const BV3>(ts),
+                                                std::span<const Bounded>(in[2]), vec3(in[3])));
+       }},
+      {"skin_dual_quaternion",
+       [](const BoundedValues& in, std::size_t k) {
+         const auto qs = many<BQuat>(in[0], k, [](const BoundedArray& a, std::size_t i) { return quat(a, i); });
+         const auto ts = many<BV3>(in[1], k, [](const BoundedArray& a, std::size_t i) { return vec3(a, i); });
+         return one(clause::SKIN_2_dual_quaternion(std::span<const BQuat>(qs), std::span<const BV3>(ts),
+                                                   std::span<const Bounded>(in[2]), vec3(in[3])));
+       }},
+      {"rigid_compose",
+       [](const BoundedValues& in, std::size_t) {
+         return pair(clause::RIGID_1_compose(quat(in[0]), vec3(in[1]), quat(in[2]), vec3(in[3])));
+       }},
+      {"rigid_apply",
+       [](const BoundedValues& in, std::size_t) {
+         return one(clause::RIGID_2_apply(quat(in[0]), vec3(in[1]), vec3(in[2])));
+       }},
+      {"rigid_inverse",
+       [](const BoundedValues& in, std::size_t) { return pair(clause::RIGID_3_inverse(quat(in[0]), vec3(in[1]))); }},
+  };
+  return ops;
+}
+
+}  // namespace
+
+void set_fast_oracle_mutation(FastOracleMutation m) { g_mutation = m; }
+
+bool has_fast_reference(const std::string& op) { return fast_ops().count(op) != 0; }
+
+std::optional<FastReference> fast_reference(const AbiOp& op, const Values& inputs, std::size_t k) {
+  const auto it = fast_ops().find(op.name);
+  if (it == fast_ops().end()) return std::nullopt;
+  BoundedValues in(inputs.size());
+  for (std::size_t a = 0; a < inputs.size(); ++a)
+    for (const Real& x : inputs[a]) in[a].push_back(from_real(x));
+  const ref::BoundedScope scope;
+  FastReference r = it->second(in, k);
+  if (!scope.decided()) return std::nullopt;
+  if (r.status != ref::Status::ok) r.outputs.assign(op.outputs.size(), {});
+  if (g_mutation == FastOracleMutation::bound_too_small)
+    for (auto& arr : r.outputs)
+      for (Bounded& y : arr) y = Bounded(y.value(), std::ldexp(y.bound(), -40));
+  if (g_mutation == FastOracleMutation::wrong_term && !r.outputs.empty() && !r.outputs[0].empty()) {
+    Bounded& y = r.outputs[0][0];  // off by 2^-50 of its size: a term dropped in a formula
+    y = Bounded(y.value() + std::ldexp(std::fabs(y.value()) + 1, -50), y.bound());
+  }
+  return r;
+}
+
+Values fast_values(const FastReference& r) {
+  Values v(r.outputs.size());
+  for (std::size_t a = 0; a < r.outputs.size(); ++a)
+    for (const Bounded& y : r.outputs[a]) v[a].push_back(Real(y.value()));
+  return v;
+}
+
+std::optional<Values> fast_rounded(const FastReference& r, ref::Format f) {
+  Values v(r.outputs.size());
+  for (std::size_t a = 0; a < r.outputs.size(); ++a)
+    for (const Bounded& y : r.outputs[a]) {
+      // Rounding is monotone: when both ends of [v - e, v + e] round to one value, so does every
+      // point between, the exact reference included. (long double -> float/double conversions
+      // round to nearest, as round_to does.)
+      const long double lo = y.value() - y.bound() * (1 + 4 * Bounded::kU);
+      const long double hi = y.value() + y.bound() * (1 + 4 * Bounded::kU);
+      if (f == ref::Format::binary32) {
+        if (static_cast<float>(lo) != static_cast<float>(hi)) return std::nullopt;
+        v[a].push_back(Real(static_cast<float>(y.value())));
+      } else {
+        if (static_cast<double>(lo) != static_cast<double>(hi)) return std::nullopt;
+        v[a].push_back(Real(static_cast<double>(y.value())));
+      }
+    }
+  return v;
+}
+
+std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c,
+                                          const Observed& obs, ref::Format f, const FastReference& want) {
+  // Only a plain numeric judgement is taken from the fast level; a wrong status, a domain error
+  // or an exact class is MPFR's to judge.
+  if (obs.call_rc != 0 || !obs.fault.empty() || obs.status != RC_OK || want.status != ref::Status::ok)
+    return std::nullopt;
+  if (tc.kind != "eps" && tc.kind != "formula") return std::nullopt;
+  BoundedValues got(obs.outputs.size());
+  for (std::size_t a = 0; a < obs.outputs.size(); ++a)
+    for (const Real& x : obs.outputs[a]) {
+      const long double v = x.toLDouble();  // a value of the format: exact
+      if (!std::isfinite(v)) return std::nullopt;
+      got[a].push_back(Bounded(v, 0));
+    }
+  const Real eps = ref::format_epsilon<Real>(f);
+  const ref::Bars bars = bars_for(tc, op, c, eps);
+  const Real scale = op.scale(c.inputs, c.k);
+  const ref::BoundedScope scope;
+  const Bounded e = output_error_bounded(op, got, want.outputs, from_real(scale),
+                                         from_real(ref::format_min_normal<Real>(f)));
+  if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
+  // The exact error lies in [e - bound, e + bound]; MPFR's err (that error over eps, rounded to
+  // double) lies between the roundings of the two ends, and TOL_1_verdict is monotone.
+  const long double spread = e.bound() * (1 + 4 * Bounded::kU);
+  const long double unit = eps.toLDouble();
+  const long double lo = (e.value() - spread) / unit * (1 - 4 * Bounded::kU);
+  const long double hi = (e.value() + spread) / unit * (1 + 4 * Bounded::kU);
+  const double lo_down = std::nextafter(static_cast<double>(lo), -INFINITY);
+  const double hi_up = std::nextafter(static_cast<double>(hi), INFINITY);
+  return FastVerdicts{ref::clause::TOL_1_verdict(std::max(lo_down, 0.0), bars), ref::clause::TOL_1_verdict(hi_up, bars)};
+}
+
+bool fast_passes(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got, ref::Format f,
+                 const FastReference& want) {
+  const auto v = fast_verdicts(op, tc, c, got, f, want);
+  return v && v->worst == ref::Verdict::pass;
+}
+
+bool may_be_acceptable(const AbiOp& op) {
+  for (const AcceptableConvention& a : acceptable_conventions())
+    if (!a.outside_domain && !a.declared_only && a.applies(op)) return true;
+  return false;
+}
+
+}  // namespace rotorcert::engine

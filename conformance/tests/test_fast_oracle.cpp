@@ -1,0 +1,148 @@
+// The two-level oracle's fast level (issue #21 item 1, engine/fast_oracle.hpp): on every case the
+// suite generates for every clause (random, edge and worked-example inputs, both formats), the
+// exact 256-bit reference lies within every bound of the fast reference, the statuses agree, and
+// every verdict the fuzz oracle takes from the fast level (surely PASS, surely not FAIL, surely
+// not PASS) is the MPFR judge's. A fast level with a too-small bound or a wrong term is caught.
+#include <cmath>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <rotorcert/engine/fast_oracle.hpp>
+#include <rotorcert/testing/clause.hpp>
+
+namespace {
+
+using namespace rotorcert;
+using engine::Real;
+
+const spec::Spec& the_spec() {
+  static const spec::Spec s = spec::load_spec(spec::resolve_spec_dir());
+  return s;
+}
+
+struct Tally {
+  std::size_t cases = 0, decided = 0, bound_violations = 0, status_mismatches = 0;
+  std::size_t judged = 0, fast_pass = 0, fast_not_pass = 0, verdict_mismatches = 0;
+  std::string first_problem;
+  void problem(const std::string& what) {
+    if (first_problem.empty()) first_problem = what;
+  }
+};
+
+/// Runs the fast level against MPFR on the suite's cases; per op.
+std::map<std::string, Tally> compare(int cases_per_family, bool judge) {
+  std::map<std::string, Tally> by_op;
+  engine::CaseOptions options;
+  options.cases_per_family = cases_per_family;
+  for (const spec::Clause& clause : the_spec().clauses) {
+    if (clause.level == "Meta") continue;
+    for (const ref::Format f : {ref::Format::binary32, ref::Format::binary64}) {
+      const auto checks =
+          engine::checks_for_clause(the_spec(), clause.id, f, options, [](const std::string&) { return true; });
+      for (const engine::Check& check : checks) {
+        if (check.log_exp_round_trip || !engine::has_fast_reference(check.op)) continue;
+        const engine::AbiOp& op = engine::judged_op(check.clause, check.op);
+        const spec::ToleranceClass& tc =
+            the_spec().lookup(check.tolerance.empty() ? engine::tolerance_for(the_spec(), check.clause, check.op)
+                                                      : check.tolerance);
+        Tally& t = by_op[check.op];
+        for (const engine::Case& c : check.cases) {
+          ++t.cases;
+          const engine::ReferenceResult want = op.reference(c.inputs, c.k);
+          const auto fast = engine::fast_reference(op, c.inputs, c.k);
+          if (!fast) continue;
+          ++t.decided;
+          const std::string where = clause.id + " " + check.op + " [" + c.label + "] " +
+                                    engine::describe_inputs(op, c, f);
+          if (fast->status != want.status) {
+            ++t.status_mismatches;
+            t.problem("status differs: " + where);
+            continue;
+          }
+          if (want.status != ref::Status::ok) continue;
+          for (std::size_t a = 0; a < want.outputs.size(); ++a)
+            for (std::size_t i = 0; i < want.outputs[a].size(); ++i) {
+              const ref::Bounded& y = fast->outputs[a][i];
+              const Real off = abs(want.outputs[a][i] - Real(y.value()));
+              if (!(off <= Real(y.bound()))) {
+                ++t.bound_violations;
+                t.problem("exact value off by " + off.toString("%.3Rg") + " > bound " +
+                          Real(y.bound()).toString("%.3Rg") + ": " + where);
+              }
+            }
+          if (!judge) continue;
+          // Observations around the correctly rounded reference: 0, 3, 40 and 2000 eps off in
+          // one component, on both sides of the bars.
+          const Real eps = ref::format_epsilon<Real>(f);
+          for (const int k : {0, 3, 40, 2000}) {
+            engine::Observed o;
+            o.status = RC_OK;
+            o.outputs = want.outputs;
+            for (auto& arr : o.outputs)
+              for (Real& x : arr) x = engine::round_to(f, x);
+            Real& x = o.outputs[0][0];
+            x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+            ++t.judged;
+            const auto fv = engine::fast_verdicts(op, tc, c, o, f, *fast);
+            if (!fv) continue;
+            const ref::Verdict v = engine::judge_case_against(op, tc, c, o, f, want, false).verdict;
+            // What the oracle takes from the fast level: surely PASS, surely not FAIL, and
+            // surely not PASS where no acceptable convention applies.
+            const bool wrong = (fv->worst == ref::Verdict::pass && v != ref::Verdict::pass) ||
+                               (fv->worst != ref::Verdict::fail && v == ref::Verdict::fail) ||
+                               (fv->best != ref::Verdict::pass && !engine::may_be_acceptable(op) &&
+                                v == ref::Verdict::pass);
+            t.fast_pass += fv->worst == ref::Verdict::pass ? 1 : 0;
+            t.fast_not_pass += fv->best != ref::Verdict::pass ? 1 : 0;
+            if (wrong) {
+              ++t.verdict_mismatches;
+              t.problem("fast verdicts " + std::to_string(static_cast<int>(fv->best)) + ".." +
+                        std::to_string(static_cast<int>(fv->worst)) + ", MPFR " + std::to_string(static_cast<int>(v)) +
+                        " at " + std::to_string(k) + " eps off: " + where);
+            }
+          }
+        }
+      }
+    }
+  }
+  return by_op;
+}
+
+TEST(FastOracle, BoundsHoldAndPassesAgreeWithMpfrOnTheSuitesCases) {
+  RC_CLAUSE("NUM-2");
+  const auto by_op = compare(32, true);
+  ASSERT_FALSE(by_op.empty());
+  for (const auto& [op, t] : by_op) {
+    EXPECT_EQ(t.bound_violations, 0u) << op << ": " << t.first_problem;
+    EXPECT_EQ(t.status_mismatches, 0u) << op << ": " << t.first_problem;
+    EXPECT_EQ(t.verdict_mismatches, 0u) << op << ": " << t.first_problem;
+    // A fast level that declines everything would agree trivially: most cases must be decided.
+    EXPECT_GE(t.decided * 2, t.cases) << op << ": the fast level decided " << t.decided << " of " << t.cases;
+    std::printf("%-28s cases %5zu  fast-decided %5zu  observations %5zu  fast PASS %5zu  fast not PASS %5zu\n",
+                op.c_str(), t.cases, t.decided, t.judged, t.fast_pass, t.fast_not_pass);
+  }
+}
+
+TEST(FastOracle, ATooSmallBoundIsCaught) {
+  RC_CLAUSE("NUM-2");
+  engine::set_fast_oracle_mutation(engine::FastOracleMutation::bound_too_small);
+  const auto by_op = compare(2, false);
+  engine::set_fast_oracle_mutation(engine::FastOracleMutation::none);
+  std::size_t violations = 0;
+  for (const auto& [op, t] : by_op) violations += t.bound_violations;
+  EXPECT_GT(violations, 0u);
+}
+
+TEST(FastOracle, AWrongTermIsCaught) {
+  RC_CLAUSE("NUM-2");
+  engine::set_fast_oracle_mutation(engine::FastOracleMutation::wrong_term);
+  const auto by_op = compare(2, false);
+  engine::set_fast_oracle_mutation(engine::FastOracleMutation::none);
+  std::size_t caught = 0;
+  for (const auto& [op, t] : by_op) caught += t.bound_violations > 0 ? 1 : 0;
+  EXPECT_EQ(caught, by_op.size()) << "every op's wrong term must be caught";
+}
+
+}  // namespace
