@@ -18,6 +18,7 @@
 #include <iostream>
 #include <memory>
 
+#include <rotorcert/report/write.hpp>
 #include <rotorcert/certify/certify.hpp>
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/report/speed.hpp>
@@ -137,7 +138,7 @@ int run(const BenchCli& o) {
   rep["sections"]["speed"] = speed;
   print_speed_summary(std::cout, speed);
   try {
-    certify::write_report(o.request.out, rep);
+    report::write_report(o.request.out, rep);
   } catch (const std::exception& e) {
     std::cerr << "rotorcert bench: cannot write the report: " << e.what() << '\n';
     return kExitUsage;

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 
+#include <rotorcert/report/write.hpp>
 #include <rotorcert/certify/certify.hpp>
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
@@ -109,7 +110,7 @@ int run(const Args& a) {
   if (!a.common.quiet)
     for (const certify::Certificate& c : certs) certify::print_certificate(std::cout, c, a.common.verbose);
   try {
-    certify::write_report(a.common.out, report);
+    report::write_report(a.common.out, report);
     journal->remove();  // the run is complete: nothing left to resume
   } catch (const std::exception& e) {
     std::cerr << "rotorcert certify: cannot write the report: " << e.what() << '\n';

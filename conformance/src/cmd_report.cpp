@@ -14,6 +14,7 @@
 #include <iostream>
 #include <memory>
 
+#include <rotorcert/report/write.hpp>
 #include <rotorcert/certify/certify.hpp>
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
@@ -285,7 +286,7 @@ int run(const Args& a) {
       std::cout << "speed: " << sp.at("note").get<std::string>() << '\n';
   }
   try {
-    certify::write_report(a.common.out, report);
+    report::write_report(a.common.out, report);
     journal->remove();  // the run is complete: nothing left to resume
   } catch (const std::exception& e) {
     std::cerr << "rotorcert report: cannot write the report: " << e.what() << '\n';

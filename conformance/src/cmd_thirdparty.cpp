@@ -16,6 +16,7 @@
 #include <set>
 #include <tuple>
 
+#include <rotorcert/report/write.hpp>
 #include <rotorcert/certify/print.hpp>
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/certify/verdict.hpp>
@@ -217,7 +218,7 @@ int run(Args a) {
     print_third_party_summary(std::cout, outcome);
   }
   try {
-    certify::write_report(a.common.out, report);
+    report::write_report(a.common.out, report);
   } catch (const std::exception& e) {
     std::cerr << "rotorcert thirdparty: cannot write the report: " << e.what() << '\n';
     return kExitUsage;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <rotorcert/report/write.hpp>
 #include <rotorcert/certify/atomic_file.hpp>
 #include <rotorcert/certify/certificate.hpp>
 #include <rotorcert/certify/print.hpp>
@@ -128,7 +129,7 @@ int run_check(const Args& a) {
       certify::report_json(spec, "vectors-check", options, run_json(seconds, command_line(), 1), {g.certificate});
   if (!a.check.out.empty()) {
     try {
-      certify::write_report(a.check.out, report);
+      report::write_report(a.check.out, report);
     } catch (const std::exception& e) {
       std::cerr << "rotorcert vectors check: cannot write the report: " << e.what() << '\n';
       return kExitUsage;

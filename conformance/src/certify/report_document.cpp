@@ -4,11 +4,9 @@
 #include <map>
 #include <stdexcept>
 
-#include <rotorcert/certify/atomic_file.hpp>
 #include <rotorcert/certify/platform.hpp>
 #include <rotorcert/certify/verdict.hpp>
 #include <rotorcert/certify/wire.hpp>
-#include <rotorcert/report/render.hpp>
 
 #ifndef ROTORCERT_VERSION
 #error "ROTORCERT_VERSION must be defined by the build"
@@ -171,12 +169,4 @@ json report_json(const spec::Spec& spec, const std::string& kind, const json& op
             {"exit_code", report_ok(kind, certificates) ? 0 : 1}}},
           {"sections", json::object()}};
 }
-
-void write_report(const std::filesystem::path& dir, const json& report) {
-  std::filesystem::create_directories(dir);
-  write_atomically(dir / "report.json", report.dump(2) + "\n");
-  write_atomically(dir / "report.md", report::render_markdown(report));
-  write_atomically(dir / "report.html", report::render_html(report));
-}
-
 }  // namespace rotorcert::certify

@@ -37,7 +37,6 @@ bool report_ok(const std::string& kind, const std::vector<Certificate>& certific
 json report_json(const spec::Spec& spec, const std::string& kind, const json& options, const json& run,
                  const std::vector<Certificate>& certificates);
 
-/// Writes report.json, report.md and report.html into dir (created if needed), each atomically.
-void write_report(const std::filesystem::path& dir, const json& report);
+// Writing it (JSON, Markdown, HTML) is the report layer's: rotorcert/report/write.hpp.
 
 }  // namespace rotorcert::certify

@@ -1,4 +1,5 @@
-// Test support for implementation tests: values in the ABI's array layouts (impl_abi.h, LAYOUT-1)
+// Test support for implementation tests (in impls/, the layer it belongs to: it reads impl.hpp
+// types): values in the ABI's array layouts (impl_abi.h, LAYOUT-1)
 // read exactly into the reference's types, and errors against the reference in eps units.
 #pragma once
 
