@@ -315,20 +315,28 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
     if (!r) return decline("a perturbed reference is undecided");
     if (r->status != want.status) return Judge::nothing;
     if (!numbers) continue;
-    Observed o;
-    o.status = RC_OK;
-    const auto rounded = engine::fast_rounded(*r, f);
-    if (!rounded) return decline("a perturbed result straddles a rounding point");
-    o.outputs = *rounded;
-    const auto v = engine::fast_verdicts(op, tc, c, o, f, want);
-    if (v && v->worst == ref::Verdict::pass) continue;
-    // Surely beyond the strict bar is "not PASS" as MPFR judges it unless an acceptable
-    // convention could make it an ACCEPTABLE PASS.
-    if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op)) {
+    // The perturbed result as rounded to the format (one candidate per way the exact one may
+    // round), judged against the element's reference: PASS for every candidate, or (where no
+    // acceptable convention could make it an ACCEPTABLE PASS) surely beyond the strict bar for
+    // every one.
+    const auto roundings = engine::fast_roundings(*r, f);
+    if (!roundings) return decline("a perturbed result straddles too many rounding points");
+    bool all_pass = true, none_pass = !engine::may_be_acceptable(op);
+    for (const engine::Values& outputs : *roundings) {
+      Observed o;
+      o.status = RC_OK;
+      o.outputs = outputs;
+      const auto v = engine::fast_verdicts(op, tc, c, o, f, want);
+      if (!v) return decline("a perturbed result's error is not bounded");
+      all_pass = all_pass && v->worst == ref::Verdict::pass;
+      none_pass = none_pass && v->best != ref::Verdict::pass;
+    }
+    if (all_pass) continue;
+    if (none_pass) {
       numbers = false;
       continue;
     }
-    return decline(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded");
+    return decline("a perturbed result sits on the strict bar");
   }
   if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (!ok || numbers) return Judge::everything;

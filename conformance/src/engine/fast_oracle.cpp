@@ -186,24 +186,39 @@ Values fast_values(const FastReference& r) {
   return v;
 }
 
-std::optional<Values> fast_rounded(const FastReference& r, ref::Format f) {
-  Values v(r.outputs.size());
+std::optional<std::vector<Values>> fast_roundings(const FastReference& r, ref::Format f, std::size_t max_candidates) {
+  // Rounding is monotone: every point of [v - e, v + e], the exact reference included, rounds to
+  // the rounding of one of its ends. (long double -> float/double conversions round to nearest
+  // even, as round_to does.) Where the ends round to neighbouring values of the format, those two
+  // are the only candidates; an interval wider than that is not decided here.
+  std::vector<Values> candidates(1, Values(r.outputs.size()));
   for (std::size_t a = 0; a < r.outputs.size(); ++a)
     for (const Bounded& y : r.outputs[a]) {
-      // Rounding is monotone: when both ends of [v - e, v + e] round to one value, so does every
-      // point between, the exact reference included. (long double -> float/double conversions
-      // round to nearest, as round_to does.)
       const long double lo = y.value() - y.bound() * (1 + 4 * Bounded::kU);
       const long double hi = y.value() + y.bound() * (1 + 4 * Bounded::kU);
+      bool adjacent;  // the two ends round to neighbours: one rounding point between them
+      Real rlo, rhi;
       if (f == ref::Format::binary32) {
-        if (static_cast<float>(lo) != static_cast<float>(hi)) return std::nullopt;
-        v[a].push_back(Real(static_cast<float>(y.value())));
+        const float l = static_cast<float>(lo), h = static_cast<float>(hi);
+        adjacent = std::nextafter(l, INFINITY) == h;
+        rlo = Real(l), rhi = Real(h);
       } else {
-        if (static_cast<double>(lo) != static_cast<double>(hi)) return std::nullopt;
-        v[a].push_back(Real(static_cast<double>(y.value())));
+        const double l = static_cast<double>(lo), h = static_cast<double>(hi);
+        adjacent = std::nextafter(l, INFINITY) == h;
+        rlo = Real(l), rhi = Real(h);
       }
+      if (rlo == rhi) {
+        for (Values& c : candidates) c[a].push_back(rlo);
+        continue;
+      }
+      if (!adjacent) return std::nullopt;  // a bound wider than an ulp: more than two roundings
+      if (candidates.size() * 2 > max_candidates) return std::nullopt;
+      std::vector<Values> both = candidates;
+      for (Values& c : candidates) c[a].push_back(rlo);
+      for (Values& c : both) c[a].push_back(rhi);
+      candidates.insert(candidates.end(), both.begin(), both.end());
     }
-  return v;
+  return candidates;
 }
 
 std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c,

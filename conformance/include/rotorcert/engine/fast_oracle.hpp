@@ -39,9 +39,11 @@ std::optional<FastReference> fast_reference(const AbiOp& op, const Values& input
 /// The exact value nearest to each fast output (for the checks that read magnitudes).
 Values fast_values(const FastReference& r);
 
-/// The outputs rounded to the format, where every component's interval rounds to one value of the
-/// format (so the exact reference rounds to it too); nullopt where one straddles a rounding point.
-std::optional<Values> fast_rounded(const FastReference& r, ref::Format f);
+/// Every way the exact outputs may round to the format: each component's interval rounds to one
+/// value of the format, or, where it holds a rounding point, to one of two; the candidates are
+/// every combination. nullopt where more than `max_candidates` combinations would be needed.
+std::optional<std::vector<Values>> fast_roundings(const FastReference& r, ref::Format f,
+                                                  std::size_t max_candidates = 256);
 
 /// The TOL-1 verdicts at the two ends of an interval that holds the exact error of `got`: the
 /// numeric verdict judge_case_against(op, tc, c, got, f, exact reference) starts from lies between
