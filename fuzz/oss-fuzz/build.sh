@@ -9,6 +9,13 @@ cd "$SRC/rotorcert"
 # wrapper) are built against it. MPFR and GMP are linked statically: the runner image has no
 # libmpfr/libgmp.
 CXXFLAGS="${CXXFLAGS//-stdlib=libc++/}"
+# Coverage feedback from the code under test only, as in the fuzz presets
+# (fuzz/coverage_ignorelist.txt: the oracle stays uninstrumented, still sanitized). The coverage
+# build (source-based profiles, no SanitizerCoverage) takes no ignore list.
+if [ "${SANITIZER:-}" != coverage ]; then
+  CFLAGS="$CFLAGS -fsanitize-coverage-ignorelist=$SRC/rotorcert/fuzz/coverage_ignorelist.txt"
+  CXXFLAGS="$CXXFLAGS -fsanitize-coverage-ignorelist=$SRC/rotorcert/fuzz/coverage_ignorelist.txt"
+fi
 build=/work/rotorcert-build
 cmake -S . -B "$build" -G Ninja \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo \
