@@ -149,9 +149,15 @@ enum class Judge { everything, status_only, nothing };
 /// quaternions and dual quaternions (EDGE-5 asks those to work at every scale), the translation
 /// a dual quaternion stands for, and the exact outputs, at most 2^(emax - 8) in magnitude;
 /// matrix entries (their determinant is a cube) within 2^(+-(emax / 3 - 4)) unless zero.
+/// The largest emax of the format's values: 127 (binary32) or 1023 (binary64).
+int emax_of(ref::Format f) { return f == ref::Format::binary32 ? 127 : 1023; }
+
+/// The magnitude beyond which an input or output has no headroom: 2^(emax - 8).
+int headroom_exponent(ref::Format f) { return emax_of(f) - 8; }
+
 bool within_headroom(const AbiOp& op, const engine::Values& inputs, const engine::Values& outputs, ref::Format f) {
-  const int emax = f == ref::Format::binary32 ? 127 : 1023;
-  const Real big = ldexp(Real(1), emax - 8);
+  const int emax = emax_of(f);
+  const Real big = ldexp(Real(1), headroom_exponent(f));
   const Real mat_big = ldexp(Real(1), emax / 3 - 4), mat_small = ldexp(Real(1), -(emax / 3 - 4));
   for (std::size_t a = 0; a < op.inputs.size(); ++a) {
     const int stride = op.inputs[a].stride;
@@ -290,15 +296,15 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
 }
 
 /// how_to_judge from the fast level (engine/fast_oracle.hpp): the same decisions, each taken only
-/// where the bounds settle it; nullopt sends the element to MPFR. A perturbed result counts as
-/// within the bar only where fast_passes says so, and its rounding to the format only where the
-/// whole interval rounds to one value, so a decided answer is the one how_to_judge gives.
+/// where the bounds settle it; nullopt sends the element to MPFR. A perturbed result's verdict is
+/// taken only where every way its exact value may round to the format gives it, so a decided
+/// answer is the one how_to_judge gives.
 std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
-                                       const engine::FastReference& want) {
+                                       const engine::FastReference& want, const std::optional<engine::FastCase>& fc) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   const bool ok = want.status == ref::Status::ok;
   if (ok) {  // within_headroom reads the outputs' magnitudes: keep clear of its threshold
-    const long double edge = std::ldexp(1.0L, (f == ref::Format::binary32 ? 127 : 1023) - 9);
+    const long double edge = std::ldexp(1.0L, headroom_exponent(f) - 1);
     for (const auto& arr : want.outputs)
       for (const ref::Bounded& y : arr)
         if (std::isfinite(y.value()) && std::fabs(y.value()) + y.bound() >= edge) return std::nullopt;
@@ -326,7 +332,7 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
       Observed o;
       o.status = RC_OK;
       o.outputs = outputs;
-      const auto v = engine::fast_verdicts(op, tc, c, o, f, want);
+      const auto v = fc ? engine::fast_verdicts(op, *fc, o, want) : std::nullopt;
       if (!v) return decline("a perturbed result's error is not bounded");
       all_pass = all_pass && v->worst == ref::Verdict::pass;
       none_pass = none_pass && v->best != ref::Verdict::pass;
@@ -483,6 +489,7 @@ int check(const Decoded& d) {
   std::vector<Judge> judge(d.n);
   std::vector<ref::Status> status(d.n);
   std::vector<std::optional<engine::FastReference>> fast(d.n);
+  std::vector<std::optional<engine::FastCase>> fast_case(d.n);  // per element, shared by every table
   std::vector<std::optional<engine::ReferenceResult>> exact(d.n);
   auto mpfr_want = [&](std::size_t e) -> const engine::ReferenceResult& {
     if (!exact[e]) exact[e] = op.reference(d.cases[e].inputs, d.k);
@@ -491,7 +498,10 @@ int check(const Decoded& d) {
   for (std::size_t e = 0; e < d.n; ++e) {
     std::optional<Judge> j;
     if (mode != OracleMode::mpfr) fast[e] = engine::fast_reference(op, d.cases[e].inputs, d.k);
-    if (fast[e]) j = how_to_judge_fast(op, tc, d.cases[e], f, *fast[e]);
+    if (fast[e]) {
+      fast_case[e] = engine::fast_case(op, tc, d.cases[e], f);
+      j = how_to_judge_fast(op, tc, d.cases[e], f, *fast[e], fast_case[e]);
+    }
     if (!j || mode == OracleMode::both) {
       const Judge m = how_to_judge(op, tc, d.cases[e], f, mpfr_want(e));
       if (j && *j != m)
@@ -516,7 +526,7 @@ int check(const Decoded& d) {
       if (judge[e] == Judge::everything) {
         // Surely within the loose bar is never a FAIL: MPFR's verdict is PASS or QUALITY_WARNING,
         // which an acceptable convention can only turn into an ACCEPTABLE PASS.
-        const auto fv = fast[e] ? engine::fast_verdicts(op, tc, d.cases[e], got[e], f, *fast[e]) : std::nullopt;
+        const auto fv = fast[e] && fast_case[e] ? engine::fast_verdicts(op, *fast_case[e], got[e], *fast[e]) : std::nullopt;
         if (fv && fv->worst != ref::Verdict::fail) {
           if (mode == OracleMode::both &&
               engine::judge_case_against(op, tc, d.cases[e], got[e], f, mpfr_want(e), false).verdict == ref::Verdict::fail)

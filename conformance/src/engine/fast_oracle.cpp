@@ -221,13 +221,19 @@ std::optional<std::vector<Values>> fast_roundings(const FastReference& r, ref::F
   return candidates;
 }
 
-std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c,
-                                          const Observed& obs, ref::Format f, const FastReference& want) {
-  // Only a plain numeric judgement is taken from the fast level; a wrong status, a domain error
-  // or an exact class is MPFR's to judge.
+std::optional<FastCase> fast_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
+  if (tc.kind != "eps" && tc.kind != "formula") return std::nullopt;
+  const Real eps = ref::format_epsilon<Real>(f);
+  return FastCase{bars_for(tc, op, c, eps), from_real(op.scale(c.inputs, c.k)),
+                  from_real(ref::format_min_normal<Real>(f)), eps.toLDouble()};
+}
+
+std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& obs,
+                                          const FastReference& want) {
+  // Only a plain numeric judgement is taken from the fast level; a wrong status or a domain error
+  // is MPFR's to judge.
   if (obs.call_rc != 0 || !obs.fault.empty() || obs.status != RC_OK || want.status != ref::Status::ok)
     return std::nullopt;
-  if (tc.kind != "eps" && tc.kind != "formula") return std::nullopt;
   BoundedValues got(obs.outputs.size());
   for (std::size_t a = 0; a < obs.outputs.size(); ++a)
     for (const Real& x : obs.outputs[a]) {
@@ -235,28 +241,18 @@ std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const spec::Tolerance
       if (!std::isfinite(v)) return std::nullopt;
       got[a].push_back(Bounded(v, 0));
     }
-  const Real eps = ref::format_epsilon<Real>(f);
-  const ref::Bars bars = bars_for(tc, op, c, eps);
-  const Real scale = op.scale(c.inputs, c.k);
   const ref::BoundedScope scope;
-  const Bounded e = output_error_bounded(op, got, want.outputs, from_real(scale),
-                                         from_real(ref::format_min_normal<Real>(f)));
+  const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
   if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
   // The exact error lies in [e - bound, e + bound]; MPFR's err (that error over eps, rounded to
   // double) lies between the roundings of the two ends, and TOL_1_verdict is monotone.
   const long double spread = e.bound() * (1 + 4 * Bounded::kU);
-  const long double unit = eps.toLDouble();
-  const long double lo = (e.value() - spread) / unit * (1 - 4 * Bounded::kU);
-  const long double hi = (e.value() + spread) / unit * (1 + 4 * Bounded::kU);
+  const long double lo = (e.value() - spread) / fc.eps * (1 - 4 * Bounded::kU);
+  const long double hi = (e.value() + spread) / fc.eps * (1 + 4 * Bounded::kU);
   const double lo_down = std::nextafter(static_cast<double>(lo), -INFINITY);
   const double hi_up = std::nextafter(static_cast<double>(hi), INFINITY);
-  return FastVerdicts{ref::clause::TOL_1_verdict(std::max(lo_down, 0.0), bars), ref::clause::TOL_1_verdict(hi_up, bars)};
-}
-
-bool fast_passes(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got, ref::Format f,
-                 const FastReference& want) {
-  const auto v = fast_verdicts(op, tc, c, got, f, want);
-  return v && v->worst == ref::Verdict::pass;
+  return FastVerdicts{ref::clause::TOL_1_verdict(std::max(lo_down, 0.0), fc.bars),
+                      ref::clause::TOL_1_verdict(hi_up, fc.bars)};
 }
 
 bool may_be_acceptable(const AbiOp& op) {

@@ -45,19 +45,26 @@ Values fast_values(const FastReference& r);
 std::optional<std::vector<Values>> fast_roundings(const FastReference& r, ref::Format f,
                                                   std::size_t max_candidates = 256);
 
+/// What judging one case needs that does not depend on the observation: the bars, the case's
+/// length scale and the format's smallest normal as Bounded values, eps. Computed once per case
+/// and shared by every table and every rounding candidate. nullopt for a class that is not a
+/// plain numeric one (exact, outcome): MPFR's to judge.
+struct FastCase {
+  ref::Bars bars;
+  ref::Bounded scale, tiny;
+  long double eps;
+};
+std::optional<FastCase> fast_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f);
+
 /// The TOL-1 verdicts at the two ends of an interval that holds the exact error of `got`: the
 /// numeric verdict judge_case_against(op, tc, c, got, f, exact reference) starts from lies between
 /// `best` and `worst`. nullopt where the fast level cannot bound the error, or where the judgement
-/// is not a plain numeric one (a wrong status, a domain error, an exact class): MPFR's to judge.
+/// is not a plain numeric one (a wrong status, a domain error): MPFR's to judge.
 struct FastVerdicts {
   ref::Verdict best, worst;
 };
-std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c,
-                                          const Observed& got, ref::Format f, const FastReference& want);
-
-/// Whether judge_case_against is certainly PASS: fast_verdicts' worst is PASS.
-bool fast_passes(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, const Observed& got, ref::Format f,
-                 const FastReference& want);
+std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& got,
+                                          const FastReference& want);
 
 /// Whether an acceptable convention (ACC-1) that needs no declaration applies to `op` inside its
 /// domain: judge_case_against may then turn a numeric QUALITY_WARNING or FAIL into an ACCEPTABLE
