@@ -149,6 +149,12 @@ enum class Judge { everything, status_only, nothing };
 /// quaternions and dual quaternions (EDGE-5 asks those to work at every scale), the translation
 /// a dual quaternion stands for, and the exact outputs, at most 2^(emax - 8) in magnitude;
 /// matrix entries (their determinant is a cube) within 2^(+-(emax / 3 - 4)) unless zero.
+/// ROTORCERT_FUZZ_DEBUG: why each decision was taken, on stderr. Read once, not per perturbation.
+bool fuzz_debug() {
+  static const bool on = std::getenv("ROTORCERT_FUZZ_DEBUG") != nullptr;
+  return on;
+}
+
 /// The largest emax of the format's values: 127 (binary32) or 1023 (binary64).
 int emax_of(ref::Format f) { return f == ref::Format::binary32 ? 127 : 1023; }
 
@@ -281,7 +287,7 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
     o.outputs = r.outputs;
     for (auto& arr : o.outputs)
       for (Real& x : arr) x = engine::round_to(f, x);
-    const bool debug = std::getenv("ROTORCERT_FUZZ_DEBUG") != nullptr;
+    const bool debug = fuzz_debug();
     const engine::CaseVerdict v = engine::judge_case_against(op, tc, c, o, f, want, debug);
     if (debug)
       std::fprintf(stderr, "perturbation %d: %g eps (%s)\n", pattern, v.error, v.detail.c_str());
@@ -310,7 +316,7 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
         if (std::isfinite(y.value()) && std::fabs(y.value()) + y.bound() >= edge) return std::nullopt;
   }
   bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f);
-  static const bool debug = std::getenv("ROTORCERT_FUZZ_DEBUG") != nullptr;
+  const bool debug = fuzz_debug();
   auto decline = [&](const char* why) -> std::optional<Judge> {
     if (debug) std::fprintf(stderr, "fast oracle: %s: %s\n", op.name.c_str(), why);
     return std::nullopt;
