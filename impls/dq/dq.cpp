@@ -9,7 +9,8 @@
 // zero rotation), or bad weights give DOMAIN_ERROR (the adaptor writes the NaNs). A non-unit
 // rotation stands for q/|q|, a non-unit dual quaternion for its DQ-4 normalisation; every
 // normalisation first scales by a power of two near the largest |component| (exact), so that
-// subnormal and near-overflow inputs keep full accuracy.
+// subnormal and near-overflow inputs keep full accuracy; where the unscaled sum of squares shows
+// that no scaling is needed (runtime/ordinary_range.hpp), the same formula runs unscaled.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <span>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/ordinary_range.hpp>
 #include <rotorcert/impl_table.hpp>
 
 namespace {
@@ -118,6 +120,8 @@ template <class S> int hemisphere_dot(const Quat<S>& a, const Quat<S>& b) {
 
 /// NORM-1: q/|q| for finite nonzero q.
 template <class S> Quat<S> normalized(const Quat<S>& q) {
+  const S n2 = dot(q, q);
+  if (runtime::is_ordinary_square(n2)) return q / std::sqrt(n2);
   const Quat<S> s = scaled(q, -scale_exponent(q));
   return s / std::sqrt(dot(s, s));
 }
@@ -131,9 +135,21 @@ template <class S> Vec<S> rotate(const Quat<S>& q, const Vec<S>& v) {
 
 // ---- dual quaternions ------------------------------------------------------------------------------
 
+/// Whether a dual quaternion's parts need no scaling (runtime/ordinary_range.hpp): |r|^2 in the
+/// ordinary range, and |d|^2 too or d = 0 (then d / |r| and r'.d stay far from overflow).
+template <class S> bool ordinary(const Dual<S>& s) {
+  const S d2 = dot(s.d, s.d);
+  return runtime::is_ordinary_square(dot(s.r, s.r)) && (d2 == 0 || runtime::is_ordinary_square(d2));
+}
+
 /// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| after a
 /// common exact power-of-two scaling of both parts (the formula is invariant under it).
 template <class S> Dual<S> normalized(const Dual<S>& s) {
+  if (ordinary(s)) {
+    const S n = std::sqrt(dot(s.r, s.r));
+    const Quat<S> ru = s.r / n;
+    return {ru, (s.d - dot(ru, s.d) * ru) / n};
+  }
   const int e = -scale_exponent(s.r);
   const Quat<S> r = scaled(s.r, e), d = scaled(s.d, e);
   const S n = std::sqrt(dot(r, r));
@@ -158,6 +174,11 @@ template <class S> Vec<S> translation(const Dual<S>& u) {
 /// DQ-3 the fast way: p' = R p + t, with r and d divided by |r| (no projection needed: see
 /// translation()).
 template <class S> Vec<S> apply_point(const Dual<S>& s, const Vec<S>& p) {
+  if (ordinary(s)) {
+    const S n = std::sqrt(dot(s.r, s.r));
+    const Dual<S> u{s.r / n, s.d / n};
+    return rotate(u.r, p) + translation(u);
+  }
   const int e = -scale_exponent(s.r);
   const Quat<S> r = scaled(s.r, e), d = scaled(s.d, e);
   const S n = std::sqrt(dot(r, r));
@@ -194,6 +215,7 @@ template <class S> Dual<S> screw_power(const Dual<S>& u, S t) {
 /// power of two), so a subnormal vector part keeps its direction.
 template <class S> S length(const Vec<S>& v) {
   using std::abs;
+  if (const S n2 = dot(v, v); runtime::is_ordinary_square(n2)) return std::sqrt(n2);
   const S m = std::max({abs(v.x), abs(v.y), abs(v.z)});
   if (m == 0) return 0;
   const int e = std::ilogb(m);
@@ -319,6 +341,10 @@ struct Dq {
   static Status inverse(const rci::Quat<S>& q_in, rci::Quat<S>& out) {
     const Quat<S> q = load(q_in);
     if (!valid(q)) return Status::domain_error;
+    if (const S n2 = dot(q, q); runtime::is_ordinary_square(n2)) {
+      out = store(conj(q) / n2);
+      return Status::ok;
+    }
     const int e = scale_exponent(q);
     const Quat<S> s = scaled(q, -e);
     out = store(scaled(conj(s) / dot(s, s), -e));

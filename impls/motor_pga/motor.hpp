@@ -10,6 +10,8 @@
 #include <array>
 #include <cmath>
 
+#include <rotorcert/runtime/ordinary_range.hpp>
+
 namespace rotorcert::motor_pga {
 
 /// An even element of Cl(3,0,1), 8 coefficients in this order:
@@ -103,14 +105,20 @@ template <class S> Motor<S> rotor(S x, S y, S z, S w) { return {w, -x, -y, -z, 0
 /// M (M ~M)^(-1/2). With n^2 = s^2 + |b|^2 and M ~M = n^2 + 2 (s p - b.c) e0123 this is
 ///   (s, b, c, p) -> (s, b, c - k b, p + k s) / n,   k = (b.c - s p) / n^2,
 /// i.e. DQ-4 carried over by MOTOR-1. A common power-of-two scale (exact) comes first so that
-/// n^2 neither overflows nor underflows. Precondition: finite, rotor part nonzero.
+/// n^2 neither overflows nor underflows, unless the rotor part's n^2 and the ideal part's squares
+/// are ordinary (runtime/ordinary_range.hpp: then the scale would change nothing but underflows
+/// far below the unit roundoff). Precondition: finite, rotor part nonzero.
 template <class S> Motor<S> normalized(const Motor<S>& m) {
   using std::abs;
-  const int e = -std::ilogb(std::max({abs(m.s), abs(m.e23), abs(m.e31), abs(m.e12)}));
-  const S s = std::scalbn(m.s, e);
-  const V3<S> b{std::scalbn(m.e23, e), std::scalbn(m.e31, e), std::scalbn(m.e12, e)};
-  const V3<S> c{std::scalbn(m.e01, e), std::scalbn(m.e02, e), std::scalbn(m.e03, e)};
-  const S p = std::scalbn(m.e0123, e);
+  const S n2 = m.s * m.s + m.e23 * m.e23 + m.e31 * m.e31 + m.e12 * m.e12;
+  const S i2 = m.e01 * m.e01 + m.e02 * m.e02 + m.e03 * m.e03 + m.e0123 * m.e0123;
+  const bool ordinary = runtime::is_ordinary_square(n2) && (i2 == 0 || runtime::is_ordinary_square(i2));
+  const int e = ordinary ? 0 : -std::ilogb(std::max({abs(m.s), abs(m.e23), abs(m.e31), abs(m.e12)}));
+  const auto scaled = [&](S x) { return ordinary ? x : std::scalbn(x, e); };
+  const S s = scaled(m.s);
+  const V3<S> b{scaled(m.e23), scaled(m.e31), scaled(m.e12)};
+  const V3<S> c{scaled(m.e01), scaled(m.e02), scaled(m.e03)};
+  const S p = scaled(m.e0123);
   const S n = std::sqrt(s * s + dot3(b, b));
   const S su = s / n;
   const V3<S> bu{b[0] / n, b[1] / n, b[2] / n};

@@ -70,6 +70,10 @@ template <class S> Motor<S> unit_motor(const rci::DualQuat<S>& d) {
 /// and by its norm, then Q2R-1.
 template <class S> Motor<S> unit_rotor(const rci::Quat<S>& q) {
   using std::abs;
+  if (const S n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; runtime::is_ordinary_square(n2)) {
+    const S n = std::sqrt(n2);  // no scaling needed (runtime/ordinary_range.hpp)
+    return pga::rotor(q[0] / n, q[1] / n, q[2] / n, q[3] / n);
+  }
   const int e = -std::ilogb(std::max({abs(q[0]), abs(q[1]), abs(q[2]), abs(q[3])}));
   const S x = std::scalbn(q[0], e), y = std::scalbn(q[1], e), z = std::scalbn(q[2], e), w = std::scalbn(q[3], e);
   const S n = std::sqrt(x * x + y * y + z * z + w * w);

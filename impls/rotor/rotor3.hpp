@@ -31,6 +31,7 @@
 
 #include <rotorcert/impl.hpp>
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/ordinary_range.hpp>
 
 namespace rotorcert::rotor {
 
@@ -69,9 +70,17 @@ impl::Quat<S> rescaled(const impl::Quat<S>& q, int e) {
   return {std::scalbn(q[0], e), std::scalbn(q[1], e), std::scalbn(q[2], e), std::scalbn(q[3], e)};
 }
 
-/// q/|q| after an exact power-of-two rescaling. Precondition: is_rotation(q).
+template <class S>
+S norm2(const impl::Quat<S>& q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
+
+/// q/|q|; after an exact power-of-two rescaling unless |q|^2 is ordinary
+/// (runtime/ordinary_range.hpp). Precondition: is_rotation(q).
 template <class S>
 impl::Quat<S> normalized(const impl::Quat<S>& q) {
+  if (const S n2 = norm2(q); runtime::is_ordinary_square(n2)) {
+    const S n = std::sqrt(n2);
+    return {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+  }
   const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
   impl::Quat<S> r = rescaled(q, -scale_exponent(m));
   const S n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
@@ -82,6 +91,7 @@ impl::Quat<S> normalized(const impl::Quat<S>& q) {
 /// |q| without overflow or underflow.
 template <class S>
 S norm4(const impl::Quat<S>& q) {
+  if (const S n2 = norm2(q); runtime::is_ordinary_square(n2)) return std::sqrt(n2);
   const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
   if (m == 0) return m;
   const int e = scale_exponent(m);
@@ -93,6 +103,7 @@ S norm4(const impl::Quat<S>& q) {
 /// |v| without overflow or underflow.
 template <class S>
 S norm3(S a, S b, S c) {
+  if (const S n2 = a * a + b * b + c * c; runtime::is_ordinary_square(n2)) return std::sqrt(n2);
   const S m = std::max({std::abs(a), std::abs(b), std::abs(c)});
   if (m == 0) return m;
   const int e = scale_exponent(m);
@@ -104,6 +115,10 @@ S norm3(S a, S b, S c) {
 /// Precondition: v finite, nonzero.
 template <class S>
 impl::Vec3<S> unit_vector(const impl::Vec3<S>& v) {
+  if (const S n2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2]; runtime::is_ordinary_square(n2)) {
+    const S n = std::sqrt(n2);
+    return {v[0] / n, v[1] / n, v[2] / n};
+  }
   const S m = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
   const int e = scale_exponent(m);
   const S a = std::scalbn(v[0], -e), b = std::scalbn(v[1], -e), c = std::scalbn(v[2], -e);
@@ -347,9 +362,13 @@ struct RotorOps {
   /// a b, no normalisation (COMPOSE-1): the rotors carry |a| and |b|. Each factor is rescaled
   /// by a power of two first and the product scaled back once, so |a| or |b| beyond the format
   /// (components near the overflow threshold, EDGE-5) cannot turn a representable product into
-  /// Inf * 0 = NaN.
+  /// Inf * 0 = NaN. Ordinary |a|^2 and |b|^2 (runtime/ordinary_range.hpp) need no rescaling.
   static Status compose(const Q& a, const Q& b, Q& out) {
     if (!is_rotation(a) || !is_rotation(b)) return bad;
+    if (runtime::is_ordinary_square(norm2(a)) && runtime::is_ordinary_square(norm2(b))) {
+      out = Conv::out(gp(Conv::in_scaled(a), Conv::in_scaled(b)));
+      return ok;
+    }
     const int ea = scale_exponent(std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2]), std::abs(a[3])}));
     const int eb = scale_exponent(std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])}));
     const Rotor3<S> p = gp(Conv::in_scaled(rescaled(a, -ea)), Conv::in_scaled(rescaled(b, -eb)));
@@ -360,6 +379,11 @@ struct RotorOps {
   /// R^-1 = ~R / (R ~R), on q rescaled by a power of two so |q|^2 cannot overflow.
   static Status inverse(const Q& q, Q& out) {
     if (!is_rotation(q)) return bad;
+    if (const S n2 = norm2(q); runtime::is_ordinary_square(n2)) {
+      const Rotor3<S> rr = reverse(Conv::in_scaled(q));
+      out = Conv::out(Rotor3<S>{rr.s / n2, rr.e23 / n2, rr.e31 / n2, rr.e12 / n2});
+      return ok;
+    }
     const int e = scale_exponent(std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])}));
     const Rotor3<S> r = Conv::in_scaled(rescaled(q, -e));
     const S n2 = dot(r, r);

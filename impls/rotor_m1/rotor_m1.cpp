@@ -17,7 +17,8 @@ using rotorcert::rotor::Rotor3;
 struct Method1 : rotorcert::rotor::PhiReadout {
   /// theta/2 = atan2(|v|, w), u = v/|v| (AXANG-1, scale-free: q need not be unit), then
   /// exp(-I u theta/2) = cos(theta/2) - I u sin(theta/2). q is first rescaled by a power of two
-  /// so that subnormal or huge components keep full accuracy; |v| and u then come from v
+  /// so that subnormal or huge components keep full accuracy (not needed where |q|^2 is
+  /// ordinary, runtime/ordinary_range.hpp); |v| and u then come from v
   /// rescaled again by its own power of two (norm3, unit_vector): a subnormal v beside w = -1
   /// keeps its axis (EDGE-8). For w < 0 the angle is taken as pi - atan2(|v|, -w), through
   /// sin(pi - x) = sin x and cos(pi - x) = -cos x: sin of the rounded pi is -8.7e-8 in binary32,
@@ -27,7 +28,9 @@ struct Method1 : rotorcert::rotor::PhiReadout {
   template <class S>
   static Rotor3<S> in(const Quat<S>& q) {
     const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
-    const Quat<S> r = rotorcert::rotor::rescaled(q, -rotorcert::rotor::scale_exponent(m));
+    const Quat<S> r = rotorcert::runtime::is_ordinary_square(rotorcert::rotor::norm2(q))
+                          ? q
+                          : rotorcert::rotor::rescaled(q, -rotorcert::rotor::scale_exponent(m));
     const S n = rotorcert::rotor::norm3(r[0], r[1], r[2]);
     if (n == 0) return {r[3] > 0 ? S(1) : S(-1), S(0), S(0), S(0)};
     S c = 0, s = 1;
