@@ -8,7 +8,9 @@
 //      transform (AoS ABI arrays <-> SoA lanes), the SoA math kernels, the fast paths of slerp,
 //      nlerp and QLB (k = 4) for blocks of ordinary inputs, and the batch loops;
 //   3. dispatch (compiled once): Highway's HWY_DYNAMIC_DISPATCH picks the default target, an
-//      explicit table of the compiled targets lets select_target / ROTORCERT_SIMD_TARGET force one.
+//      explicit table of the compiled targets lets select_target / ROTORCERT_SIMD_TARGET force one;
+//      with the default target, a batch's tail shorter than one block (a single-element call is
+//      all tail) runs on the narrowest SIMD target (split_tail).
 //
 // The rotor R = Phi(q) = w - x e23 - y e31 - z e12 (Q2R-1) is stored by its quaternion
 // coefficients: the sandwich R v ~R, the product Phi(a)Phi(b) and the rotor log/exp are written
@@ -57,6 +59,7 @@ using Blend = int (*)(std::size_t, std::size_t, const float*, const float*, floa
 struct Kernels {
   const char* name;  // hwy::TargetName of the target it was compiled for
   std::int64_t target;
+  std::size_t lanes;  // floats per vector: elements per block
   Unary normalize;
   Binary compose;
   Binary apply_vector;  // also APPLY-2: bivector coefficients rotate like a vector
@@ -214,11 +217,15 @@ HWY_INLINE void store_status(M bad, std::uint8_t* status) {
 
 /// The tail of a batch (n not a multiple of N) runs as a full block on copies padded with a
 /// valid element (`fill`, `width` floats), so that every kernel only ever sees whole blocks.
+/// Only the target's N lanes are filled, element by element: a single-element call pays for
+/// N - 1 small copies, not for kMaxLanes memcpy calls (which made n = 1 cost ~250 ns).
 struct Padded {
   HWY_ALIGN float data[16 * kMaxLanes];
   const float* from(const float* src, std::size_t count, std::size_t width, const float* fill) {
+    const std::size_t lanes = hn::Lanes(D());
     std::memcpy(data, src, count * width * sizeof(float));
-    for (std::size_t l = count; l < kMaxLanes; ++l) std::memcpy(data + l * width, fill, width * sizeof(float));
+    for (std::size_t l = count; l < lanes; ++l)
+      for (std::size_t c = 0; c < width; ++c) data[l * width + c] = fill[c];
     return data;
   }
 };
@@ -996,13 +1003,28 @@ int for_blend_blocks(std::size_t n, std::size_t k, const float* q, const float* 
   for (; i + lanes <= n; i += lanes) block(q + i * k * 4, w + i * k, out + i * 4, status + i);
   if (i == n) return 0;
   const std::size_t count = n - i;
-  std::vector<float> pq(lanes * k * 4), pw(lanes * k, 1.0f);
-  for (std::size_t e = 0; e < lanes * k; ++e) std::memcpy(&pq[e * 4], kIdentity, sizeof kIdentity);
-  std::memcpy(pq.data(), q + i * k * 4, count * k * 4 * sizeof(float));
-  std::memcpy(pw.data(), w + i * k, count * k * sizeof(float));
+  // The padded tail on the stack up to 8 influences (every blend the suite and a skinning rig
+  // make); beyond that on the heap.
+  constexpr std::size_t kStackInfluences = 8;
+  HWY_ALIGN float stack_q[kStackInfluences * 4 * kMaxLanes], stack_w[kStackInfluences * kMaxLanes];
+  std::vector<float> heap_q, heap_w;
+  float* pq = stack_q;
+  float* pw = stack_w;
+  if (k > kStackInfluences) {
+    heap_q.resize(lanes * k * 4);
+    heap_w.resize(lanes * k);
+    pq = heap_q.data();
+    pw = heap_w.data();
+  }
+  std::memcpy(pq, q + i * k * 4, count * k * 4 * sizeof(float));
+  std::memcpy(pw, w + i * k, count * k * sizeof(float));
+  for (std::size_t e = count * k; e < lanes * k; ++e) {
+    for (std::size_t c = 0; c < 4; ++c) pq[e * 4 + c] = kIdentity[c];
+    pw[e] = 1.0f;
+  }
   HWY_ALIGN float o[4 * kMaxLanes];
   std::uint8_t s[kMaxLanes];
-  block(pq.data(), pw.data(), o, s);
+  block(pq, pw, o, s);
   std::memcpy(out + i * 4, o, count * 4 * sizeof(float));
   std::memcpy(status + i, s, count);
   return 0;
@@ -1112,8 +1134,8 @@ int BlendLog(std::size_t n, std::size_t k, const float* q, const float* w, float
 }
 
 const Kernels* GetKernels() {
-  static const Kernels k{hwy::TargetName(HWY_TARGET), HWY_TARGET, &Normalize, &Compose, &ApplyVector, &ToMatrix,
-                         &Log, &Exp, &Slerp, &Nlerp, &BlendQlb, &BlendLog};
+  static const Kernels k{hwy::TargetName(HWY_TARGET), HWY_TARGET, hn::Lanes(D()), &Normalize, &Compose, &ApplyVector,
+                         &ToMatrix, &Log, &Exp, &Slerp, &Nlerp, &BlendQlb, &BlendLog};
   return &k;
 }
 
@@ -1142,7 +1164,9 @@ struct State {
   std::size_t count = 0;
   const Kernels* fallback_default = nullptr;  // Highway's own choice
   const Kernels* env_default = nullptr;       // ROTORCERT_SIMD_TARGET, if it names a runnable target
+  const Kernels* narrowest = nullptr;         // the runnable SIMD target with the fewest lanes
   std::atomic<const Kernels*> active{nullptr};
+  std::atomic<bool> forced{false};            // a target chosen by select_target or the environment
 };
 
 /// The names of the runnable targets, NULL-terminated (rc_impl::simd_targets). Filled once.
@@ -1167,7 +1191,12 @@ State& state() {
       const bool fallback = (k->target == HWY_SCALAR || k->target == HWY_EMU128);
       if (fallback || (supported & k->target) != 0) st->runnable[st->count++] = k;
     }
-    for (std::size_t i = 0; i < st->count; ++i) g_target_names[i] = st->runnable[i]->name;
+    for (std::size_t i = 0; i < st->count; ++i) {
+      g_target_names[i] = st->runnable[i]->name;
+      const Kernels* k = st->runnable[i];
+      const bool simd = k->target != HWY_SCALAR && k->target != HWY_EMU128;
+      if (simd && (st->narrowest == nullptr || k->lanes <= st->narrowest->lanes)) st->narrowest = k;  // best of the narrowest
+    }
     st->fallback_default = HWY_DYNAMIC_DISPATCH(GetKernels)();
     if (const char* env = std::getenv("ROTORCERT_SIMD_TARGET"); env != nullptr && *env != '\0') {
       st->env_default = find(*st, env);
@@ -1176,6 +1205,7 @@ State& state() {
                      st->fallback_default->name);
     }
     st->active.store(st->env_default ? st->env_default : st->fallback_default);
+    st->forced.store(st->env_default != nullptr);
     return true;
   }();
   (void)filled;
@@ -1187,6 +1217,25 @@ State& state() {
 const bool g_init = (state(), true);
 
 inline const Kernels& active() { return *state().active.load(std::memory_order_relaxed); }
+
+/// Runs a batch as call(kernels, first, count): the whole batch on the active target, except that
+/// with the default target a tail shorter than its block (n mod lanes elements; a single-element
+/// call is all tail) runs on the narrowest SIMD target instead. A wide target computes a tail as
+/// a whole padded block, 16 lanes on AVX-512 for one element; on 4 lanes that costs a quarter.
+/// A forced target (select_target, ROTORCERT_SIMD_TARGET) runs everything itself, so that the
+/// tests of each target see its own tail code.
+template <class Call>
+int split_tail(std::size_t n, const Call& call) {
+  State& s = state();
+  const Kernels& wide = *s.active.load(std::memory_order_relaxed);
+  const Kernels* narrow = s.narrowest;
+  if (s.forced.load(std::memory_order_relaxed) || narrow == nullptr || narrow->lanes >= wide.lanes)
+    return call(wide, 0, n);
+  const std::size_t full = n - n % wide.lanes;
+  if (full != 0)
+    if (const int rc = call(wide, 0, full); rc != 0) return rc;
+  return full == n ? 0 : call(*narrow, full, n - full);
+}
 
 }  // namespace
 
@@ -1206,16 +1255,22 @@ struct RotorSimd {
       "EDGE-8",  "EDGE-9",    nullptr};
 
   static int normalize_batch(std::size_t n, const float* q, float* out, std::uint8_t* status) {
-    return active().normalize(n, q, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.normalize(m, q + 4 * i, out + 4 * i, status + i);
+    });
   }
   static int compose_batch(std::size_t n, const float* a, const float* b, float* out, std::uint8_t* status) {
-    return active().compose(n, a, b, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.compose(m, a + 4 * i, b + 4 * i, out + 4 * i, status + i);
+    });
   }
   static int apply_vector_batch(std::size_t n, const float* q, const float* v, float* out, std::uint8_t* status) {
-    return active().apply_vector(n, q, v, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.apply_vector(m, q + 4 * i, v + 3 * i, out + 3 * i, status + i);
+    });
   }
   static int apply_bivector_batch(std::size_t n, const float* q, const float* b, float* out, std::uint8_t* status) {
-    return active().apply_vector(n, q, b, out, status);  // I is central: R (I b) ~R = I (R b ~R)
+    return apply_vector_batch(n, q, b, out, status);  // I is central: R (I b) ~R = I (R b ~R)
   }
   /// APPLY-3: R (s I) ~R = s I for every rotor; only the domain is checked.
   static int apply_trivector_batch(std::size_t n, const float* q, const float* s, float* out, std::uint8_t* status) {
@@ -1233,26 +1288,38 @@ struct RotorSimd {
     return 0;
   }
   static int to_matrix_batch(std::size_t n, const float* q, float* out, std::uint8_t* status) {
-    return active().to_matrix(n, q, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.to_matrix(m, q + 4 * i, out + 9 * i, status + i);
+    });
   }
   static int log_batch(std::size_t n, const float* q, float* out, std::uint8_t* status) {
-    return active().log(n, q, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.log(m, q + 4 * i, out + 3 * i, status + i);
+    });
   }
   static int exp_batch(std::size_t n, const float* v, float* out, std::uint8_t* status) {
-    return active().exp(n, v, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.exp(m, v + 3 * i, out + 4 * i, status + i);
+    });
   }
   static int slerp_batch(std::size_t n, const float* a, const float* b, const float* t, float* out,
                          std::uint8_t* status) {
-    return active().slerp(n, a, b, t, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.slerp(m, a + 4 * i, b + 4 * i, t + i, out + 4 * i, status + i);
+    });
   }
   static int nlerp_batch(std::size_t n, const float* a, const float* b, const float* t, float* out,
                          std::uint8_t* status) {
-    return active().nlerp(n, a, b, t, out, status);
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.nlerp(m, a + 4 * i, b + 4 * i, t + i, out + 4 * i, status + i);
+    });
   }
   static int blend_qlb_batch(std::size_t n, std::size_t k, const float* q, const float* w, float* out,
                              std::uint8_t* status) {
     try {
-      return active().blend_qlb(n, k, q, w, out, status);
+      return split_tail(n, [&](const Kernels& ks, std::size_t i, std::size_t m) {
+        return ks.blend_qlb(m, k, q + 4 * k * i, w + k * i, out + 4 * i, status + i);
+      });
     } catch (...) {  // the tail buffer could not be allocated
       return 1;
     }
@@ -1260,7 +1327,9 @@ struct RotorSimd {
   static int blend_log_batch(std::size_t n, std::size_t k, const float* q, const float* w, float* out,
                              std::uint8_t* status) {
     try {
-      return active().blend_log(n, k, q, w, out, status);
+      return split_tail(n, [&](const Kernels& ks, std::size_t i, std::size_t m) {
+        return ks.blend_log(m, k, q + 4 * k * i, w + k * i, out + 4 * i, status + i);
+      });
     } catch (...) {
       return 1;
     }
@@ -1272,11 +1341,13 @@ struct RotorSimd {
     State& s = state();
     if (target == nullptr) {
       s.active.store(s.env_default ? s.env_default : s.fallback_default);
+      s.forced.store(s.env_default != nullptr);
       return 0;
     }
     const Kernels* k = find(s, target);
     if (k == nullptr) return 1;
     s.active.store(k);
+    s.forced.store(true);
     return 0;
   }
   static const char* current_target() { return active().name; }

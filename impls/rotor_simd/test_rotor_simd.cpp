@@ -1156,4 +1156,86 @@ TEST(RotorSimdFastPaths, QlbBlocksWithOneUnusualLane) {
   }
 }
 
+// ---- dispatch: a short tail runs on the narrowest target ---------------------------------------
+
+/// Lanes of binary32 vectors per x86 Highway target (SCALAR and EMU128 are not SIMD targets).
+std::size_t lanes_of(const std::string& target) {
+  static const std::map<std::string, std::size_t> lanes = {
+      {"SSSE3", 4}, {"SSE4", 4}, {"AVX2", 8}, {"AVX3", 16}, {"AVX3_DL", 16}, {"AVX3_ZEN4", 16}};
+  const auto it = lanes.find(target);
+  return it == lanes.end() ? 0 : it->second;
+}
+
+// With the default target, the n mod L elements after the last full block of L lanes run on the
+// narrowest SIMD target (a single-element call costs a quarter of a 16-lane block there), the
+// full blocks on the default one. Bit for bit: the full blocks as the default target computes
+// them, the tail as the narrowest computes it alone; a wrong offset or width in the split would
+// move or mix elements.
+TEST(RotorSimdDispatch, TheTailOfADefaultBatchRunsOnTheNarrowestTarget) {
+  const TargetGuard guard;
+  if (const char* env = std::getenv("ROTORCERT_SIMD_TARGET"); env != nullptr && *env != '\0')
+    GTEST_SKIP() << "ROTORCERT_SIMD_TARGET=" << env << " forces every element onto one target";
+  ASSERT_EQ(impl().select_target(nullptr), 0);
+  const std::string wide = impl().current_target();
+  std::string narrow;
+  for (const std::string& t : targets())
+    if (lanes_of(t) != 0 && (narrow.empty() || lanes_of(t) <= lanes_of(narrow))) narrow = t;
+  if (lanes_of(wide) == 0 || narrow.empty()) GTEST_SKIP() << "default target " << wide << " is not an x86 SIMD target";
+  const std::size_t full = 2 * lanes_of(wide), n = full + 3;
+  const bool split = lanes_of(narrow) < lanes_of(wide);
+  std::printf("  default %s, tail on %s\n", wide.c_str(), split ? narrow.c_str() : wide.c_str());
+
+  Rng r;
+  const std::size_t k = 4;
+  std::vector<float> a, b, t, v, q, w;
+  for (std::size_t i = 0; i < n; ++i) {
+    const F4 qa = rescale(to_f4(unit_double(r)), int(i % 5) - 2), qb = to_f4(near(r, unit_double(r), 2.0));
+    a.insert(a.end(), qa.begin(), qa.end());
+    b.insert(b.end(), qb.begin(), qb.end());
+    t.push_back(static_cast<float>(r.uniform(-0.5, 1.5)));
+    for (int c = 0; c < 3; ++c) v.push_back(static_cast<float>(r.uniform(-2, 2)));
+    for (std::size_t j = 0; j < k; ++j) {
+      const F4 f = to_f4(near(r, unit_double(r), 1.0));
+      q.insert(q.end(), f.begin(), f.end());
+      w.push_back(static_cast<float>(r.uniform(0.05, 1)));
+    }
+  }
+  struct Op {
+    const char* name;
+    std::size_t width;  // output floats per element
+    std::function<void(std::size_t first, std::size_t count, float* out, std::uint8_t* st)> call;
+  };
+  const std::vector<Op> ops_under_test = {
+      {"normalize", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().normalize(m, &a[4 * i], o, s), 0); }},
+      {"compose", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().compose(m, &a[4 * i], &b[4 * i], o, s), 0); }},
+      {"apply_vector", 3, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().apply_vector(m, &a[4 * i], &v[3 * i], o, s), 0); }},
+      {"to_matrix", 9, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().to_matrix(m, &a[4 * i], o, s), 0); }},
+      {"log", 3, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().log(m, &a[4 * i], o, s), 0); }},
+      {"exp", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().exp(m, &v[3 * i], o, s), 0); }},
+      {"slerp", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().slerp(m, &a[4 * i], &b[4 * i], &t[i], o, s), 0); }},
+      {"nlerp", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().nlerp(m, &a[4 * i], &b[4 * i], &t[i], o, s), 0); }},
+      {"blend_qlb", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().blend_qlb(m, k, &q[4 * k * i], &w[k * i], o, s), 0); }},
+      {"blend_log", 4, [&](std::size_t i, std::size_t m, float* o, std::uint8_t* s) { ASSERT_EQ(ops().blend_log(m, k, &q[4 * k * i], &w[k * i], o, s), 0); }},
+  };
+  for (const Op& op : ops_under_test) {
+    std::vector<float> got(n * op.width), want(n * op.width);
+    std::vector<std::uint8_t> got_st(n, 99), want_st(n, 99);
+    ASSERT_EQ(impl().select_target(nullptr), 0);
+    op.call(0, n, got.data(), got_st.data());
+    ASSERT_EQ(impl().select_target(wide.c_str()), 0);
+    if (split) {
+      op.call(0, full, want.data(), want_st.data());
+      ASSERT_EQ(impl().select_target(narrow.c_str()), 0);
+      op.call(full, n - full, want.data() + full * op.width, want_st.data() + full);
+    } else {
+      op.call(0, n, want.data(), want_st.data());
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      EXPECT_EQ(got_st[i], want_st[i]) << op.name << " element " << i;
+      EXPECT_EQ(0, std::memcmp(&got[i * op.width], &want[i * op.width], op.width * sizeof(float)))
+          << op.name << " element " << i << " of " << n << ": not the bits of " << (i < full || !split ? wide : narrow);
+    }
+  }
+}
+
 }  // namespace
