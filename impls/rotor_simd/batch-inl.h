@@ -114,6 +114,63 @@ int ToMatrix(std::size_t n, const float* q, float* out, std::uint8_t* status) {
   return 0;
 }
 
+/// INV-1 (kernels: inverse).
+int Inverse(std::size_t n, const float* q, float* out, std::uint8_t* status) {
+  for_blocks<1>(n, {q}, {4}, {kIdentity}, out, 4, status, [](const float* const* p, float* o, std::uint8_t* s) {
+    const Quat a = load_quat(p[0]);
+    const M bad = hn::Not(is_rotation(a));
+    store_quat(poison(bad, inverse(a)), o);
+    store_status(bad, s);
+  });
+  return 0;
+}
+
+/// AXANG-1 (kernels: axis_angle): two output arrays, so its own loop; the tail through a padded
+/// block as for_blocks does.
+int ToAxisAngle(std::size_t n, const float* q, float* angle, float* axis, std::uint8_t* status) {
+  const D d;
+  const std::size_t lanes = hn::Lanes(d);
+  const auto block = [&](const float* pq, float* pa, float* px, std::uint8_t* s) {
+    const Quat a = load_quat(pq);
+    const M bad = hn::Not(is_rotation(a));
+    V ang;
+    Vec3 ax;
+    axis_angle(a, ang, ax);
+    hn::StoreU(hn::IfThenElse(bad, nan_v(), ang), d, pa);
+    store_vec3(poison(bad, ax), px);
+    store_status(bad, s);
+  };
+  std::size_t i = 0;
+  for (; i + lanes <= n; i += lanes) block(q + 4 * i, angle + i, axis + 3 * i, status + i);
+  if (i == n) return 0;
+  const std::size_t count = n - i;
+  Padded pad;
+  HWY_ALIGN float oa[kMaxLanes], ox[3 * kMaxLanes];
+  std::uint8_t s[kMaxLanes];
+  block(pad.from(q + 4 * i, count, 4, kIdentity), oa, ox, s);
+  std::memcpy(angle + i, oa, count * sizeof(float));
+  std::memcpy(axis + 3 * i, ox, 3 * count * sizeof(float));
+  std::memcpy(status + i, s, count);
+  return 0;
+}
+
+/// AXANG-2 (kernels: from_axis_angle); lanes with |angle| > 16 in binary64.
+int FromAxisAngle(std::size_t n, const float* angle, const float* axis, float* out, std::uint8_t* status) {
+  for_blocks<2>(n, {angle, axis}, {1, 3}, {kZero1, kUnitZ}, out, 4, status,
+                [](const float* const* p, float* o, std::uint8_t* s) {
+                  const D d;
+                  const V a = hn::LoadU(d, p[0]);
+                  const Vec3 u = load_vec3(p[1]);
+                  const M bad = hn::Not(hn::And(hn::And(hn::IsFinite(a), all_finite(u)),
+                                                hn::Gt(max_abs(u), hn::Zero(d))));
+                  store_quat(poison(bad, from_axis_angle(a, u)), o);
+                  const M far = hn::AndNot(bad, hn::Gt(hn::Abs(a), hn::Set(d, 16.0f)));
+                  for_each_set_lane(far, [&](std::size_t l) { from_axis_angle_double(p[0][l], p[1] + 3 * l, o + 4 * l); });
+                  store_status(bad, s);
+                });
+  return 0;
+}
+
 int Log(std::size_t n, const float* q, float* out, std::uint8_t* status) {
   for_blocks<1>(n, {q}, {4}, {kIdentity}, out, 3, status, [](const float* const* p, float* o, std::uint8_t* s) {
     const Quat a = load_quat(p[0]);

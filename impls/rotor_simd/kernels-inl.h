@@ -184,6 +184,50 @@ HWY_INLINE Vec3 log_unit(const Quat& u) {
   return r;
 }
 
+/// INV-1: q* / |q|^2 for finite nonzero q, from qs = q s (s the exact power of two of
+/// safe_scaled): q^-1 = (qs* / |qs|^2) s, the factor s last, so that only an inverse that itself
+/// leaves the format overflows or underflows.
+HWY_INLINE Quat inverse(const Quat& q) {
+  const V s = pow2_scale(max_abs(q));
+  const Quat qs = scale(q, s);
+  const V n2 = dot(qs, qs);
+  return {hn::Mul(hn::Div(hn::Neg(qs.x), n2), s), hn::Mul(hn::Div(hn::Neg(qs.y), n2), s),
+          hn::Mul(hn::Div(hn::Neg(qs.z), n2), s), hn::Mul(hn::Div(qs.w, n2), s)};
+}
+
+/// AXANG-1 of a finite nonzero q: angle = 2 atan2(|v|, w) in [0, 2 pi] (scale-free: q need not be
+/// unit), axis = v/|v|, from v rescaled by its own power of two (a subnormal v beside w = -1 keeps
+/// its axis, EDGE-8). v = 0: the axis +z, the angle 0 (w > 0) or 2 pi (w < 0). Where w times v's
+/// scale overflows (|v| below 2^-126 |w|), atan2(|v|, +-inf) gives 0 or pi, within 2^-125 of the
+/// exact half angle.
+HWY_INLINE void axis_angle(const Quat& q, V& angle, Vec3& axis) {
+  const D d;
+  // v's own scale, not q's: scaled by q's largest component (w) a v of 2^-130 |w| would go
+  // subnormal and lose its direction's bits.
+  const Vec3 v{q.x, q.y, q.z};
+  const V s = pow2_scale(max_abs(v));
+  const Vec3 vs = scale(v, s);
+  const V n = hn::Sqrt(dot(vs, vs));
+  angle = hn::Mul(hn::Set(d, 2.0f), atan2_nonneg_y(n, hn::Mul(q.w, s)));
+  const M zero = hn::Eq(n, hn::Zero(d));
+  const V nn = hn::IfThenElse(zero, hn::Set(d, 1.0f), n);
+  axis = {hn::IfThenZeroElse(zero, hn::Div(vs.x, nn)), hn::IfThenZeroElse(zero, hn::Div(vs.y, nn)),
+          hn::IfThenElse(zero, hn::Set(d, 1.0f), hn::Div(vs.z, nn))};
+}
+
+/// AXANG-2 for finite angle and finite nonzero axis: (sin(angle/2) u, cos(angle/2)) with
+/// u = axis/|axis| (axis rescaled first); angle 0 gives the identity exactly (EDGE-1). Accurate
+/// for |angle| <= 16; callers route larger angles to from_axis_angle_double.
+HWY_INLINE Quat from_axis_angle(V angle, const Vec3& axis) {
+  const D d;
+  const Vec3 as = scale(axis, pow2_scale(max_abs(axis)));
+  const V inv = hn::Div(hn::Set(d, 1.0f), hn::Sqrt(dot(as, as)));
+  const V h = hn::Mul(angle, hn::Set(d, 0.5f));
+  const V k = hn::Mul(hn::Sin(d, h), inv);
+  const V c = hn::IfThenElse(hn::Eq(h, hn::Zero(d)), hn::Set(d, 1.0f), hn::Cos(d, h));
+  return {hn::Mul(k, as.x), hn::Mul(k, as.y), hn::Mul(k, as.z), c};
+}
+
 /// EXP-1 of a bivector in the quaternion view: (cos|v|, sin|v| v/|v|), renormalised (the two
 /// polynomials' errors would otherwise show in the norm); exp(0) = 1 exactly. Accurate for
 /// |v| <= 8; callers route larger |v| to exp_double.

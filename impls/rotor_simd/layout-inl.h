@@ -106,6 +106,7 @@ struct Padded {
 constexpr float kIdentity[4] = {0, 0, 0, 1};
 constexpr float kZero3[3] = {0, 0, 0};
 constexpr float kZero1[1] = {0};
+constexpr float kUnitZ[3] = {0, 0, 1};
 
 /// Runs block(offset, in-pointers..., out-pointer, status) over n elements: full blocks in
 /// place, the tail through padded copies. `in_width` / `fill` describe each input array.

@@ -27,6 +27,7 @@
 // paths (2b') skip all of that for blocks whose every lane is ordinary (unit inputs, t in
 // [0, 1], ...) and hand any other block to these general kernels.
 
+#include "rotor/rotor3.hpp"  // from_matrix: the scalar Cl(3,0) code of rotor_m1 / rotor_m2
 #include "rotor_simd/shared.hpp"
 
 // ---- per-target code: the -inl.h files, once per Highway target --------------------------------
@@ -42,7 +43,8 @@ namespace rotorcert::rotor_simd::HWY_NAMESPACE {
 
 const Kernels* GetKernels() {
   static const Kernels k{hwy::TargetName(HWY_TARGET), HWY_TARGET, hn::Lanes(D()), &Normalize, &Compose, &ApplyVector,
-                         &ToMatrix, &Log, &Exp, &Slerp, &Nlerp, &BlendQlb, &BlendLog};
+                         &ToMatrix, &Inverse, &ToAxisAngle, &FromAxisAngle, &Log, &Exp, &Slerp, &Nlerp,
+                         &BlendQlb, &BlendLog};
   return &k;
 }
 
@@ -156,10 +158,15 @@ struct RotorSimd {
       "(scalar/EMU128, SSSE3, SSE4, AVX2, AVX-512)";
   static constexpr std::uint32_t levels = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_ROBUST;
   static constexpr const char* const clauses[] = {
-      "QUAT-2",  "NORM-1",  "COMPOSE-1", "APPLY-1",    "APPLY-2",  "APPLY-3",   "MAT-1",   "LOG-1",   "LOG-2",
-      "EXP-1",   "EXP-2",     "SLERP-1",    "SLERP-2",  "SLERP-3",  "SLERP-4",   "SLERP-5", "NLERP-1", "QLB-1",
-      "LOGBLEND-1", "EDGE-1", "EDGE-2",     "EDGE-3",   "EDGE-4",    "EDGE-5",  "EDGE-6",  "EDGE-7",
-      "EDGE-8",  "EDGE-9",    nullptr};
+      // Core
+      "QUAT-2", "AXANG-1", "AXANG-2", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2", "APPLY-3", "MAT-1",
+      "MAT-2",
+      // Interp
+      "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
+      // Blend
+      "QLB-1", "LOGBLEND-1",
+      // Robust
+      "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9", nullptr};
 
   static int normalize_batch(std::size_t n, const float* q, float* out, std::uint8_t* status) {
     return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
@@ -193,6 +200,31 @@ struct RotorSimd {
       status[i] = ok ? RC_OK : RC_DOMAIN_ERROR;
     }
     return 0;
+  }
+  static int inverse_batch(std::size_t n, const float* q, float* out, std::uint8_t* status) {
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.inverse(m, q + 4 * i, out + 4 * i, status + i);
+    });
+  }
+  static int to_axis_angle_batch(std::size_t n, const float* q, float* angle, float* axis, std::uint8_t* status) {
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.to_axis_angle(m, q + 4 * i, angle + i, axis + 3 * i, status + i);
+    });
+  }
+  static int from_axis_angle_batch(std::size_t n, const float* angle, const float* axis, float* out,
+                                   std::uint8_t* status) {
+    return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {
+      return k.from_axis_angle(m, angle + i, axis + 3 * i, out + 4 * i, status + i);
+    });
+  }
+  /// MAT-2, MAT-3: element by element in scalar code, the Cl(3,0) rotors' (impls/rotor/rotor3.hpp):
+  /// Higham's polar iteration runs a data-dependent number of steps and Shepperd's pivot
+  /// branches four ways per element, which SIMD lanes would all pay for.
+  static rotorcert::impl::Status from_matrix(const rotorcert::impl::Mat3<float>& m, rotorcert::impl::Quat<float>& out) {
+    const std::optional<rotor::Rotor3<float>> r = rotor::rotor_from_matrix(m);
+    if (!r) return rotorcert::impl::Status::domain_error;
+    out = rotor::canonical_sign(rotor::PhiReadout::out(*r));
+    return rotorcert::impl::Status::ok;
   }
   static int to_matrix_batch(std::size_t n, const float* q, float* out, std::uint8_t* status) {
     return split_tail(n, [&](const Kernels& k, std::size_t i, std::size_t m) {

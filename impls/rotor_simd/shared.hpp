@@ -30,6 +30,7 @@ using Unary = int (*)(std::size_t, const float*, float*, std::uint8_t*);
 using Binary = int (*)(std::size_t, const float*, const float*, float*, std::uint8_t*);
 using Interp = int (*)(std::size_t, const float*, const float*, const float*, float*, std::uint8_t*);
 using Blend = int (*)(std::size_t, std::size_t, const float*, const float*, float*, std::uint8_t*);
+using AxisAngleOut = int (*)(std::size_t, const float*, float*, float*, std::uint8_t*);
 
 /// One target's kernels, all with the ABI's batch signatures.
 struct Kernels {
@@ -40,6 +41,9 @@ struct Kernels {
   Binary compose;
   Binary apply_vector;  // also APPLY-2: bivector coefficients rotate like a vector
   Unary to_matrix;
+  Unary inverse;
+  AxisAngleOut to_axis_angle;
+  Binary from_axis_angle;  // (angle, axis) -> q
   Unary log;
   Unary exp;
   Interp slerp;
@@ -90,6 +94,19 @@ inline void slerp_double(const float* qa, const float* qb, float t, float* out) 
   }
   const double sa = std::sin((1 - static_cast<double>(t)) * omega), sb = std::sin(t * omega), s = std::sin(omega);
   for (int i = 0; i < 4; ++i) out[i] = static_cast<float>((sa * a[i] + sb * b[i]) / s);
+}
+
+/// AXANG-2 in binary64 for one lane: (sin(angle/2) u, cos(angle/2)), u = axis/|axis|. Used
+/// for |angle| > 16, where the binary32 polynomials' error grows with the argument.
+inline void from_axis_angle_double(float angle, const float* axis, float* out) {
+  const double x = axis[0], y = axis[1], z = axis[2];
+  const double m = std::max({std::fabs(x), std::fabs(y), std::fabs(z)});
+  const double n = std::sqrt((x / m) * (x / m) + (y / m) * (y / m) + (z / m) * (z / m));
+  const double h = static_cast<double>(angle) / 2, k = std::sin(h) / n;
+  out[0] = static_cast<float>(k * (x / m));
+  out[1] = static_cast<float>(k * (y / m));
+  out[2] = static_cast<float>(k * (z / m));
+  out[3] = static_cast<float>(std::cos(h));
 }
 
 /// EXP-1 in binary64 for one lane: (sin|v| v/|v|, cos|v|). Used for |v| > 8.
