@@ -7,6 +7,7 @@
 // frame_pose/<same>: the same frames without the vertices (FrameJob::skin_vertices = false):
 // the part that is the rotation library's alone (the LBS vertex loop is the suite's).
 #include "frame_bench.hpp"
+#include "options.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -207,6 +208,13 @@ void register_frame_benchmarks(const RunConfig& /*config*/, bool quick) {
 
   const std::vector<const rc_impl*> tables = impl::builtin_tables();
   const std::vector<r::SkinningMethod> methods = r::skinning_methods(tables);
+  struct Registration {
+    std::string name, key;
+    const FrameScene* scene;
+    r::SkinningMethod method;
+    bool pose_only;
+  };
+  std::vector<Registration> once;
   for (const auto& sp : scenes()) {
     const FrameScene& sc = *sp;
     for (const r::SkinningMethod& m : methods) {
@@ -221,16 +229,31 @@ void register_frame_benchmarks(const RunConfig& /*config*/, bool quick) {
         std::fprintf(stderr, "frame: %s, %s: %s: skipped\n", sc.label.c_str(), m.name().c_str(), why.c_str());
         continue;
       }
-      for (const bool pose_only : {false, true}) {
-        const std::string name = std::string(pose_only ? "frame_pose/" : "frame/") + sc.label + "/" + m.table->name +
-                                 "/" + (m.is_float() ? "float" : "double") + "/" + r::to_string(m.technique);
-        const std::string key = sc.label + "/" + m.name();  // frame/ and frame_pose/ share one preparation
-        benchmark::RegisterBenchmark(name.c_str(), [&sc, m, pose_only, key](benchmark::State& st) {
-          run_frame(st, sc, m, pose_only, key);
-        });
-      }
+      for (const bool pose_only : {false, true})
+        once.push_back({std::string(pose_only ? "frame_pose/" : "frame/") + sc.label + "/" + m.table->name + "/" +
+                            (m.is_float() ? "float" : "double") + "/" + r::to_string(m.technique),
+                        sc.label + "/" + m.name(),  // frame/ and frame_pose/ share one preparation
+                        &sc, m, pose_only});
     }
   }
+  // Every frame benchmark runs kFrameRepetitions times under its own name (the report takes the
+  // median and the range, REPORT-2), in rounds: round k runs every benchmark once, so that a
+  // drift of the machine's speed during the run spreads over every method alike instead of
+  // landing on the methods that happened to run last. Registered by hand rather than with
+  // Repetitions(), which renames the runs and adds aggregate rows whose coefficient of
+  // variation is NaN (invalid JSON) for a counter that is 0 in every run.
+  const int rounds = quick ? kQuickFrameRepetitions : kFrameRepetitions;
+  benchmark::AddCustomContext("rotorcert_frame_repetitions", std::to_string(rounds));
+  for (int round = 0; round < rounds; ++round)
+    for (const Registration& g : once) {
+      const FrameScene* sc = g.scene;
+      const r::SkinningMethod m = g.method;
+      const bool pose_only = g.pose_only;
+      const std::string key = g.key;
+      benchmark::RegisterBenchmark(g.name.c_str(), [sc, m, pose_only, key](benchmark::State& st) {
+        run_frame(st, *sc, m, pose_only, key);
+      });
+    }
 }
 
 }  // namespace rotorcert::bench

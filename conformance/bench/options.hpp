@@ -18,6 +18,10 @@ inline constexpr std::size_t kStreamingSize = 65536;
 /// A full run over every implementation and op must stay well under 5 minutes on 2 cores.
 inline constexpr double kDefaultMinTime = 0.05;
 inline constexpr double kQuickMinTime = 0.01;
+/// Repetitions of every frame benchmark (full and --quick runs): the report's paper-claim verdicts
+/// compare the ranges of the repetitions.
+inline constexpr int kFrameRepetitions = 7;
+inline constexpr int kQuickFrameRepetitions = 5;
 
 struct Options {
   bool quick = false;

@@ -160,11 +160,17 @@ void print_speed_summary(std::ostream& out, const nlohmann::json& speed) {
                   !t.at("met").is_boolean() ? "not measured" : t.at("met").get<bool>() ? "met" : "MISSED");
     out << line << '\n';
   }
+  const auto verdict = [](const nlohmann::json& c, const char* k) {
+    return c.contains(k) && c[k].is_string() ? c[k].get<std::string>() : std::string("?");
+  };
   for (const auto& c : speed.at("paper_claim")) {
-    char line[256];
-    std::snprintf(line, sizeof line, "frame %-14s %-6s QLB %9.1f us  DQB %9.1f us  %s %9.1f us: GA rotors faster: %s",
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "frame %-14s %-6s QLB %9.1f us  DQB %9.1f us  %s %9.1f us (medians): vs QLB %s, vs DQB %s; "
+                  "GA rotors faster: %s",
                   c.at("scene").get<std::string>().c_str(), c.at("scalar").get<std::string>().c_str(), num(c, "qlb_us"),
                   num(c, "dqb_us"), c.at("rotor").get<std::string>().c_str(), num(c, "rotor_us"),
+                  verdict(c, "verdict_qlb").c_str(), verdict(c, "verdict_dqb").c_str(),
                   c.at("holds").get<bool>() ? "yes" : "no");
     out << line << '\n';
   }

@@ -122,6 +122,58 @@ TEST(SpeedSection, PaperClaimComparesTheFastestRotorWithQlbAndDqb) {
   EXPECT_TRUE(named);
 }
 
+// Repeated frames (REPORT-2): the frame time is the median of the repetitions, and a verdict is
+// "faster" or "slower" only where the two ranges do not overlap.
+TEST(SpeedSection, PaperClaimVerdictsComeFromTheRangesOfTheRepetitions) {
+  RC_CLAUSE("REPORT-2");
+  json b = bench_document();
+  json& runs = b["benchmarks"];
+  json kept = json::array();
+  for (const json& r : runs)
+    if (r.at("name").get<std::string>().rfind("frame/", 0) != 0) kept.push_back(r);
+  runs = kept;
+  const auto reps = [&](const std::string& scene, const std::string& impl, const std::string& technique,
+                        std::initializer_list<double> us) {
+    for (double t : us) runs.push_back(frame_run(scene, impl, technique, t));
+  };
+  // "clear": the rotor's slowest run (95) beats QLB's fastest (100); DQB's ranges overlap it.
+  reps("clear", "glm_quat", "LBS", {100, 104, 101, 110, 102});
+  reps("clear", "dq", "DQS", {90, 97, 95, 93, 99});
+  reps("clear", "rotor_m2", "LBS", {90, 95, 91, 92, 93});
+  // "slow": every rotor run is slower than every QLB and DQB run.
+  reps("slow", "glm_quat", "LBS", {10, 11, 12});
+  reps("slow", "dq", "DQS", {20, 21, 19});
+  reps("slow", "rotor_simd", "LBS", {30, 31, 29});
+  const json s = speed_section(b, {}, "bench.json");
+  ASSERT_EQ(s.at("paper_claim").size(), 2u);
+  for (const json& c : s["paper_claim"]) {
+    if (c.at("scene") == "clear") {
+      EXPECT_DOUBLE_EQ(c.at("qlb_us").get<double>(), 102.0);   // median of 100 101 102 104 110
+      EXPECT_DOUBLE_EQ(c.at("rotor_us").get<double>(), 92.0);  // median of 90 91 92 93 95
+      EXPECT_DOUBLE_EQ(c.at("vs_qlb").get<double>(), 102.0 / 92.0);
+      EXPECT_DOUBLE_EQ(c.at("vs_qlb_interval")[0].get<double>(), 100.0 / 95.0);
+      EXPECT_DOUBLE_EQ(c.at("vs_qlb_interval")[1].get<double>(), 110.0 / 90.0);
+      EXPECT_EQ(c.at("verdict_qlb"), "faster");
+      EXPECT_EQ(c.at("verdict_dqb"), "parity");  // DQB 90-99 against 90-95
+      EXPECT_FALSE(c.at("holds").get<bool>());
+      EXPECT_EQ(c.at("qlb").at("repetitions"), 5);
+    } else {
+      EXPECT_EQ(c.at("scene"), "slow");
+      EXPECT_EQ(c.at("verdict_qlb"), "slower");
+      EXPECT_EQ(c.at("verdict_dqb"), "slower");
+      EXPECT_DOUBLE_EQ(c.at("vs_dqb_interval")[1].get<double>(), 21.0 / 29.0);
+    }
+  }
+  for (const json& f : s.at("frames"))
+    if (f.at("scene") == "clear" && f.at("impl") == "glm_quat") {
+      EXPECT_DOUBLE_EQ(f.at("us_range")[0].get<double>(), 100.0);
+      EXPECT_DOUBLE_EQ(f.at("us_range")[1].get<double>(), 110.0);
+    }
+  const std::string md = rotorcert::report::render_markdown({{"sections", {{"speed", s}}}});
+  EXPECT_NE(md.find("102 (100\u2013110, 5 runs)"), std::string::npos) << md;
+  EXPECT_NE(md.find("faster"), std::string::npos);
+}
+
 TEST(SpeedSection, AccuracyJoinsTheCertificateOfTheSameTableAndOp) {
   RC_CLAUSE("REPORT-2");
   const json cert = {{"name", "rotor_simd"},

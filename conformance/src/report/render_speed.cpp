@@ -24,6 +24,24 @@ std::string ratio_text(double r) { return std::isfinite(r) ? fmt3(r) + "\u00d7" 
 std::string percent_text(double f) { return std::isfinite(f) ? fmt3(100.0 * f) + " %" : "\u2014"; }
 std::string gflops_text(double f) { return std::isfinite(f) ? fmt3(f * 1e-9) : "\u2014"; }
 
+/// A frame time with its spread: "median (low-high, R runs)", or the median alone.
+std::string spread_text(const json& spread) {
+  const double m = num(spread, "median"), lo = num(spread, "low"), hi = num(spread, "high");
+  if (!std::isfinite(m)) return "\u2014";
+  const double reps = num(spread, "repetitions", 1);
+  if (!(reps > 1) || !std::isfinite(lo) || !std::isfinite(hi)) return fmt3(m);
+  return fmt3(m) + " (" + fmt3(lo) + "\u2013" + fmt3(hi) + ", " + fmt3(reps) + " runs)";
+}
+/// A ratio with its interval and verdict: "1.20\u00d7 [1.05\u20131.31] faster".
+std::string compare_text(const json& claim, const char* ratio, const char* interval, const char* verdict) {
+  std::string t = ratio_text(num(claim, ratio));
+  if (claim.contains(interval) && claim[interval].is_array() && claim[interval].size() == 2 &&
+      claim[interval][0].is_number() && claim[interval][1].is_number())
+    t += " [" + fmt3(claim[interval][0].get<double>()) + "\u2013" + fmt3(claim[interval][1].get<double>()) + "]";
+  const std::string v = str(claim, verdict);
+  return v.empty() ? t : t + " " + v;
+}
+
 std::string target_verdict(const json& t) {
   if (!t.contains("met") || !t["met"].is_boolean()) return "not measured";
   if (t["met"].get<bool>()) return "met";
@@ -169,15 +187,22 @@ void render_speed_html(std::ostream& out, const json& s) {
   if (arr(s, "frames").empty()) {
     out << "<p class=\"muted\">No frame benchmarks in this run.</p>\n";
   } else {
+    out << "<p class=\"muted\">Frame times are medians over repeated runs, with their range. The fastest GA rotor is "
+           "<em>faster</em> than a method only where its slowest run beats that method's fastest (the interval of the "
+           "time ratio lies above 1), <em>slower</em> where the reverse holds, at <em>parity</em> where the ranges "
+           "overlap.</p>\n";
     out << "<table class=\"speed-claim\">\n<thead><tr><th>Character</th><th>Scalar</th><th>QLB \u00b5s</th><th>DQB \u00b5s</th>"
            "<th>Fastest GA rotor</th><th>\u00b5s</th><th>vs QLB</th><th>vs DQB</th><th>Paper's claim</th></tr></thead>\n<tbody>\n";
     for (const json& c : arr(s, "paper_claim")) {
       const bool holds = str(c, "holds") == "true";
-      out << "<tr><td>" << esc(str(c, "scene")) << "</td><td>" << esc(str(c, "scalar")) << "</td><td>" << num_text(c, "qlb_us")
-          << "</td><td>" << num_text(c, "dqb_us") << "</td><td><code>" << esc(str(c, "rotor")) << "</code></td><td>"
-          << num_text(c, "rotor_us") << "</td><td>" << ratio_text(num(c, "vs_qlb")) << "</td><td>"
-          << ratio_text(num(c, "vs_dqb")) << "</td><td><span class=\"badge oc-" << (holds ? "PASS" : "FAIL") << "\">"
-          << (holds ? "holds" : "does not hold") << "</span></td></tr>\n";
+      out << "<tr><td>" << esc(str(c, "scene")) << "</td><td>" << esc(str(c, "scalar")) << "</td><td>"
+          << esc(c.contains("qlb") ? spread_text(c["qlb"]) : num_text(c, "qlb_us")) << "</td><td>"
+          << esc(c.contains("dqb") ? spread_text(c["dqb"]) : num_text(c, "dqb_us")) << "</td><td><code>"
+          << esc(str(c, "rotor")) << "</code></td><td>"
+          << esc(c.contains("rotor_spread") ? spread_text(c["rotor_spread"]) : num_text(c, "rotor_us")) << "</td><td>"
+          << esc(compare_text(c, "vs_qlb", "vs_qlb_interval", "verdict_qlb")) << "</td><td>"
+          << esc(compare_text(c, "vs_dqb", "vs_dqb_interval", "verdict_dqb")) << "</td><td><span class=\"badge oc-"
+          << (holds ? "PASS" : "FAIL") << "\">" << (holds ? "holds" : "does not hold") << "</span></td></tr>\n";
     }
     out << "</tbody>\n</table>\n<div class=\"charts\">\n";
     std::map<std::string, std::vector<Bar>> per_scene;
@@ -282,9 +307,15 @@ void render_speed_markdown(std::ostream& out, const json& s) {
   if (!arr(s, "paper_claim").empty()) {
     header(out, {"Character", "Scalar", "QLB \u00b5s", "DQB \u00b5s", "Fastest GA rotor", "\u00b5s", "vs QLB", "vs DQB", "Paper's claim"});
     for (const json& c : arr(s, "paper_claim"))
-      row(out, {cell(str(c, "scene")), cell(str(c, "scalar")), num_text(c, "qlb_us"), num_text(c, "dqb_us"), code(str(c, "rotor")),
-                num_text(c, "rotor_us"), ratio_text(num(c, "vs_qlb")), ratio_text(num(c, "vs_dqb")),
+      row(out, {cell(str(c, "scene")), cell(str(c, "scalar")),
+                cell(c.contains("qlb") ? spread_text(c["qlb"]) : num_text(c, "qlb_us")),
+                cell(c.contains("dqb") ? spread_text(c["dqb"]) : num_text(c, "dqb_us")), code(str(c, "rotor")),
+                cell(c.contains("rotor_spread") ? spread_text(c["rotor_spread"]) : num_text(c, "rotor_us")),
+                cell(compare_text(c, "vs_qlb", "vs_qlb_interval", "verdict_qlb")),
+                cell(compare_text(c, "vs_dqb", "vs_dqb_interval", "verdict_dqb")),
                 str(c, "holds") == "true" ? "holds" : "**does not hold**"});
+    out << "\nFrame times: median (range, runs). vs QLB / DQB: their time over the rotor's, [interval from the ranges], and the "
+           "verdict: faster only where the ranges do not overlap.\n";
     out << "\n";
   }
   if (!arr(s, "frames").empty()) {
