@@ -219,7 +219,10 @@ HWY_NOINLINE void slerp_block(const float* const* p, float* o, std::uint8_t* s) 
   const V sb = hn::Sin(d, hn::Mul(tt, omega));
   const Quat r{hn::MulAdd(sa, ua.x, hn::Mul(sb, ub.x)), hn::MulAdd(sa, ua.y, hn::Mul(sb, ub.y)),
                hn::MulAdd(sa, ua.z, hn::Mul(sb, ub.z)), hn::MulAdd(sa, ua.w, hn::Mul(sb, ub.w))};
-  const Quat res = select(hn::Eq(omega, hn::Zero(d)), ua, fast_unit_of_scaled(r));
+  // r has the size of sin(Omega): for Omega near 2^-72 its squares underflow, and rsqrt of 0 made
+  // the result inf / NaN on every target but AVX-512 (fuzz/corpus/interpolation/
+  // regression-simd-slerp-tiny-omega); scaled by a power of two first, as every normalisation is.
+  const Quat res = select(hn::Eq(omega, hn::Zero(d)), ua, fast_unit_of_scaled(safe_scaled(r)));
   store_quat(poison(bad, res), o);
   const M far = hn::AndNot(bad, hn::Gt(hn::Abs(tt), hn::Set(d, 4.0f)));
   for_each_set_lane(far, [&](std::size_t l) {

@@ -157,6 +157,14 @@ const PairSet& pairs() {
         for (float& x : sb) x *= 3.7f;
       add(sa, sb);
     }
+    // Endpoints 2^-70 .. 2^-80 rad apart, one of them the other's antipode (the hemisphere flip
+    // makes them equal but for tiny components): sin(Omega) a's squares underflow (the general
+    // kernel's regression, fuzz/corpus/interpolation/regression-simd-slerp-tiny-omega).
+    for (int e = 70; e <= 80; e += 2) {
+      add({std::ldexp(1.0f, -e), 0, -1, 0}, {0, std::ldexp(1.5f, -e), 1, std::ldexp(1.0f, -e - 20)});
+      add({0x1.0a0a0ap-51f, 0x1.5bc07ep-68f, -0x1.d5f97ep+21f, 0x1.de867cp-64f},
+          {0x1.2c1a7ep-111f, 0x1.81487ep-98f, 0x1.d7cc7cp-16f, 0x1.917dacp-96f});
+    }
     // Exact identities and the spec's examples.
     add({0, 0, 0, 1}, {0, 0, 0, 1});
     add({0, 0, 0, 1}, {1, 0, 0, 0});
