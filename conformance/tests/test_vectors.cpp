@@ -176,10 +176,12 @@ TEST(VectorsExport, IdsAreUniqueStableAndNameTheirVector) {
       std::snprintf(tail, sizeof tail, "/%04d", v.tc_id);
       EXPECT_EQ(v.id, f.clause + "/" + f.op + "/" + vectors::format_name(f.format) + tail);
       EXPECT_FALSE(v.flags.empty()) << v.id;
-      // The flags come from the label; the label is the comment.
-      std::vector<std::string> want = vectors::flags_for_label(v.input.label);
-      if (f.round_trip()) want.insert(want.begin(), "RoundTrip");
-      EXPECT_EQ(v.flags, want) << v.id;
+      // In vocabulary order, each once (RoundTrip leads on EXP-2's round trip).
+      std::vector<std::string> rest(v.flags.begin() + (f.round_trip() ? 1 : 0), v.flags.end());
+      if (f.round_trip()) {
+        EXPECT_EQ(v.flags.front(), "RoundTrip") << v.id;
+      }
+      EXPECT_EQ(vectors::sorted_flags(rest), rest) << v.id;
     }
   EXPECT_EQ(n, json::parse(slurp(dir / "index.json")).at("numberOfTests").get<std::size_t>());
   // More cases per family extend the families; the worked examples come first and keep their ids.
@@ -201,8 +203,34 @@ TEST(VectorsExport, EveryFlagIsDocumentedAndUnknownLabelsAreRejected) {
     for (const json& t : j.at("tests"))
       for (const json& flag : t.at("flags")) EXPECT_TRUE(j.at("flags").contains(flag.get<std::string>())) << name << " " << flag;
   }
-  EXPECT_THROW(vectors::flags_for_label("a label no family produces"), std::logic_error);
-  EXPECT_EQ(vectors::flags_for_label("non-unit scale 2^900"), (std::vector<std::string>{"NonUnit", "HugeScale"}));
+  EXPECT_THROW(vectors::sorted_flags({"AFlagNoOneDocumented"}), std::logic_error);
+  EXPECT_THROW(vectors::sorted_flags({}), std::logic_error);
+  EXPECT_EQ(vectors::sorted_flags({"HugeScale", "NonUnit", "HugeScale"}), (std::vector<std::string>{"NonUnit", "HugeScale"}));
+}
+
+// The flags are set where each case is made (engine::Case::flags), never parsed from labels: every
+// case of every clause's checks carries documented flags, and the scale families say by their flags
+// whether |q|^2 leaves the format (EDGE-5: beyond 2^+-10).
+TEST(VectorsExport, EveryEngineCaseCarriesItsFlagsAsData) {
+  std::size_t cases = 0, huge = 0, tiny = 0;
+  for (const auto& f : vectors::build_vector_files(the_spec(), options()))
+    for (const auto& v : f.tests) {
+      ++cases;
+      EXPECT_FALSE(v.flags.empty()) << v.id << " [" << v.input.label << "]";
+      const bool has_huge = std::count(v.flags.begin(), v.flags.end(), "HugeScale") != 0;
+      const bool has_tiny = std::count(v.flags.begin(), v.flags.end(), "TinyScale") != 0;
+      huge += has_huge;
+      tiny += has_tiny;
+      const std::string prefix = "non-unit scale 2^";
+      if (v.input.label.rfind(prefix, 0) == 0 && v.input.label.find("..") == std::string::npos) {
+        const int e = std::stoi(v.input.label.substr(prefix.size()));
+        EXPECT_EQ(has_huge, e > 10) << v.id << " [" << v.input.label << "]";
+        EXPECT_EQ(has_tiny, e < -10) << v.id << " [" << v.input.label << "]";
+      }
+    }
+  EXPECT_GT(cases, 1000u);
+  EXPECT_GT(huge, 0u);
+  EXPECT_GT(tiny, 0u);
 }
 
 TEST(VectorsExport, FilesValidateAgainstTheSchemas) {

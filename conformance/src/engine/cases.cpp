@@ -175,6 +175,7 @@ std::vector<Real> weights(Gen& g, std::size_t k) {
 Case random_case(Gen& g, const std::string& op, std::size_t k = 0) {
   Case c;
   c.label = "random";
+  c.flags = {"Random"};
   auto q = [&] { return flat(g.unit_quaternion()); };
   auto t01 = [&] { return std::vector<Real>{g.round(Real(g.uniform(0, 1)))}; };
   if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log" ||
@@ -267,9 +268,20 @@ std::vector<std::size_t> arrays_with_stride(const std::string& op, int stride) {
   return r;
 }
 
-Case labelled(Case c, std::string label) {
+/// The case with its label (prose, for people) and its test-vector flags (data: the vocabulary of
+/// conformance/src/vectors/flags.cpp, in any order).
+Case labelled(Case c, std::string label, std::vector<std::string> flags) {
   c.label = std::move(label);
+  c.flags = std::move(flags);
   return c;
+}
+
+/// Flags of a non-unit input scaled by 2^e: beyond +-10 its |q|^2 leaves the format (EDGE-5).
+std::vector<std::string> scale_flags(int e) {
+  std::vector<std::string> f = {"NonUnit"};
+  if (e > 10) f.push_back("HugeScale");
+  if (e < -10) f.push_back("TinyScale");
+  return f;
 }
 
 /// Replaces every quaternion of every quaternion array by q, every dual quaternion by d.
@@ -368,7 +380,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
   const Real pi = ref::ScalarTraits<Real>::pi();
   const bool single = op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" ||
                       op == "log" || op == "apply_vector" || op == "to_angle" || op == "to_axis" || op == "sqrt";
-  auto rotation_case = [&](const Real& angle, const char* what) {
+  auto rotation_case = [&](const Real& angle, const char* what, const char* flag) {
     Case c = random_case(g, op);
     if (single) {
       c.inputs[0] = flat(rounded_rotation(g, angle));
@@ -403,6 +415,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
       c.inputs[0] = flat(ref::DualQuaternion<Real>{g.rounded(r.value.real), g.rounded(r.value.dual)});
     }
     c.label = what;
+    c.flags = {flag};
     return c;
   };
   const bool rotation_valued = single || op == "exp" || op == "from_axis_angle" || op == "from_matrix" || op == "compose" ||
@@ -410,10 +423,10 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
                                op == "rigid_compose" || op == "rigid_apply" || op == "rigid_inverse";
   if (rotation_valued) {
     // One angle per decade whatever n is (2e-9, 2e-8, ..., 2): no decade is left to chance.
-    for (int k = -9; k <= 0; ++k) cases.push_back(rotation_case(Real(2) * pow(Real(10), Real(k)), "angle sweep 1e-9 .. pi"));
-    for (int i = 0; i < n; ++i) cases.push_back(rotation_case(swept_angle(g, i, n), "angle sweep 1e-9 .. pi"));
+    for (int k = -9; k <= 0; ++k) cases.push_back(rotation_case(Real(2) * pow(Real(10), Real(k)), "angle sweep 1e-9 .. pi", "AngleSweep"));
+    for (int i = 0; i < n; ++i) cases.push_back(rotation_case(swept_angle(g, i, n), "angle sweep 1e-9 .. pi", "AngleSweep"));
     for (int i = 0; i < n; ++i)
-      cases.push_back(rotation_case(Real(2) * pi - shortfall(g, i, n), "near a full turn: 2 pi - 1e-9 .. 1e-1"));
+      cases.push_back(rotation_case(Real(2) * pi - shortfall(g, i, n), "near a full turn: 2 pi - 1e-9 .. 1e-1", "NearFullTurn"));
     return;
   }
   if (op == "slerp" || op == "nlerp") {
@@ -424,6 +437,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
       const Real distance = i < 0 ? Real(2) * pow(Real(10), Real(i + 1)) : swept_angle(g, i, n);
       c.inputs[1] = flat(g.rounded(a * Gen::rotation(distance, g.direction())));
       c.label = "pair distance sweep 1e-9 .. pi";
+      c.flags = {"AngleSweep"};
       cases.push_back(c);
     }
     for (int i = 0; i < n; ++i) {
@@ -432,6 +446,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
       c.inputs[0] = flat(a);
       c.inputs[1] = flat(b);
       c.label = i % 2 == 0 ? "exact antipode (rounded dot below -1 where possible)" : "near-antipodal pair";
+      c.flags = {i % 2 == 0 ? "Antipodal" : "NearAntipodal"};
       cases.push_back(c);
     }
     // Near-identical pairs at every scale of the format: b = a rotated by 2^-j, j = 1 .. p + 2.
@@ -443,6 +458,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
       c.inputs[0] = flat(a);
       c.inputs[1] = flat(g.rounded(a * Gen::rotation(angle, g.direction())));
       c.label = "near-identical pair, distance 2^-" + std::to_string(1 + (i % (p + 2)));
+      c.flags = {"NearIdentical"};
       cases.push_back(c);
     }
     return;
@@ -453,6 +469,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
       const auto [a, b] = near_antipodal_pair(g, i, n);
       set_pair(g, c, op, a, b);
       c.label = "near-antipodal influences";
+      c.flags = {"NearAntipodal"};
       cases.push_back(c);
     }
     return;
@@ -463,6 +480,7 @@ void add_ordinary_families(std::vector<Case>& cases, Gen& g, const std::string& 
       const auto [a, b] = near_antipodal_pair(g, i, n);
       set_pair(g, c, op, a, b);
       c.label = "near-antipodal real parts";
+      c.flags = {"NearAntipodal"};
       cases.push_back(c);
     }
   }
@@ -481,7 +499,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       Case c = random();
       const Real s(std::ldexp(g.uniform(0.5, 1.0), g.integer(-8, 8)));
       for (Real& x : c.inputs[0]) x = g.round(x * s);
-      return labelled(c, "non-unit scale 2^-8..2^8");
+      return labelled(c, "non-unit scale 2^-8..2^8", {"NonUnit"});
     });
   } else if (clause == "MAT-2") {
     repeat([&](int) { return random(); });
@@ -493,6 +511,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       c.inputs = {{}};
       for (const Real& x : m) c.inputs[0].push_back(g.round(x));
       c.label = "near half turn";
+      c.flags = {"NearHalfTurn"};
       return c;
     });
   } else if (clause == "MAT-3") {
@@ -500,11 +519,11 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       Case c = random();
       if (i % 4 == 3) {  // a reflection: det < 0 is outside the domain
         for (int r = 0; r < 3; ++r) c.inputs[0][r] = -c.inputs[0][r];
-        return labelled(c, "reflection (det < 0)");
+        return labelled(c, "reflection (det < 0)", {"Reflection"});
       }
       const double size = std::pow(10.0, g.uniform(-6, -2));
       for (Real& x : c.inputs[0]) x = g.round(x + Real(g.uniform(-size, size)));
-      return labelled(c, "perturbed rotation");
+      return labelled(c, "perturbed rotation", {"NonOrthogonalMatrix"});
     });
   } else if (clause == "AXANG-1" || clause == "AXANG-3" || clause == "AXANG-4" || clause == "SQRT-1") {
     repeat([&](int) { return random(); });
@@ -513,13 +532,14 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       Case c;
       c.inputs = {flat(g.rounded(Gen::rotation(Real(g.uniform(2 * M_PI - 1, 2 * M_PI)), g.direction())))};
       c.label = "angle in (2pi - 1, 2pi)";
+      c.flags = {"AngleNear2Pi"};
       return c;
     });
     if (clause == "SQRT-1") {
       // q^ = -1: s = (0, 0, 1, 0), the +z of LOG-2 (another unit pure quaternion: ACC-1 minus_one_axis).
       for (double s : {1.0, 0.5, 3.0})
-        cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion"});
-      cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components"});
+        cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion", {"NegativeReal"}});
+      cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components", {"NegativeZero", "NegativeReal"}});
     }
   } else if (clause == "DQ-7" || clause == "DQ-8") {
     repeat([&](int) { return random(); });
@@ -531,7 +551,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       std::vector<Real>& v = c.inputs[0];
       for (int i = 0; i < 8; ++i) v[i] = g.round(v[i] * s);
       for (int i = 4; i < 8; ++i) v[i] = g.round(v[i] + v[i - 4] * Real(g.uniform(-0.5, 0.5)));
-      return labelled(c, "dual part not orthogonal to the real part");
+      return labelled(c, "dual part not orthogonal to the real part", {"NonUnit"});  // DQ-4 repairs it
     });
     if (clause == "DQ-8") {
       // The branch cut r = -1: xi = (pi t/|t|, t/2), and (pi (0, 0, 1), 0) without a translation
@@ -539,8 +559,8 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       repeat([&](int i) {
         const V3 t = i % 4 == 0 ? V3{Real(0), Real(0), Real(0)} : g.vector(-1, 3);
         const auto r = ref::clause::DQ_1_from_rotation_translation(Quat{Real(-1), Real(0), Real(0), Real(0)}, t).value;
-        Case c{{flat(ref::DualQuaternion<Real>{g.rounded(r.real), g.rounded(r.dual)})}, 0, ""};
-        return labelled(c, i % 4 == 0 ? "real part -1, no translation" : "real part -1 (the branch cut)");
+        Case c{{flat(ref::DualQuaternion<Real>{g.rounded(r.real), g.rounded(r.dual)})}, 0, "", {}};
+        return labelled(c, i % 4 == 0 ? "real part -1, no translation" : "real part -1 (the branch cut)", {"NegativeReal"});
       });
     }
   } else if (clause == "DQ-9") {
@@ -549,30 +569,30 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       Case c = random();
       if (i % 2 == 0) {  // a pure translation: xi_r = 0, exp = (1, (0, xi_d)) exactly
         for (int j = 0; j < 3; ++j) c.inputs[0][std::size_t(j)] = Real(0);
-        return labelled(c, "pure translation (xi_r = 0)");
+        return labelled(c, "pure translation (xi_r = 0)", {"PureTranslation"});
       }
       const V3 d = g.direction();  // beyond a half turn of the rotor: |xi_r| in (pi, 3 pi)
       const Real len(g.uniform(M_PI, 3 * M_PI));
       for (int j = 0; j < 3; ++j) c.inputs[0][std::size_t(j)] = g.round(d[std::size_t(j)] * len);
-      return labelled(c, "|xi_r| in (pi, 3 pi)");
+      return labelled(c, "|xi_r| in (pi, 3 pi)", {"LargeAngle"});
     });
   } else if (clause == "LOG-2") {
     for (double s : {1.0, 0.5, 3.0})
-      cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion"});
-    cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components"});
+      cases.push_back(Case{{{Real(0), Real(0), Real(0), g.round(Real(-s))}}, 0, "negative real quaternion", {"NegativeReal"}});
+    cases.push_back(Case{{{Real(-0.0), Real(0), Real(-0.0), Real(-1)}}, 0, "-1 with -0 components", {"NegativeZero", "NegativeReal"}});
   } else if (clause == "SLERP-2") {
     repeat([&](int) { return random(); });
   } else if (clause == "SLERP-3") {
     repeat([&](int i) {
       Case c = random();
       c.inputs[2] = {Real(i % 2)};
-      return labelled(c, i % 2 ? "t = 1" : "t = 0");
+      return labelled(c, i % 2 ? "t = 1" : "t = 0", {"Endpoint"});
     });
   } else if (clause == "SLERP-4") {
     repeat([&](int i) {
       Case c = random();
       c.inputs[2] = {g.round(Real(i % 2 ? g.uniform(1, 2) : g.uniform(-1, 0)))};
-      return labelled(c, "t outside [0, 1]");
+      return labelled(c, "t outside [0, 1]", {"TOutsideUnitInterval"});
     });
   } else if (clause == "SLERP-5") {
     // Half the pairs obtuse (a.b < 0), so the hemisphere rule is always exercised.
@@ -586,12 +606,13 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       for (int j = 0; j <= 8; ++j) {
         Case c = base;
         c.inputs[2] = {Real(j) / Real(8)};
-        cases.push_back(labelled(c, obtuse ? "t = j/8 on one obtuse pair" : "t = j/8 on one pair"));
+        cases.push_back(labelled(c, obtuse ? "t = j/8 on one obtuse pair" : "t = j/8 on one pair",
+                                  obtuse ? std::vector<std::string>{"TSweep", "ObtusePair"} : std::vector<std::string>{"TSweep"}));
       }
     }
   } else if (clause == "SKIN-3") {
     repeat([&](int i) {
-      if (i % 2 == 0) return labelled(random(1), "single influence");
+      if (i % 2 == 0) return labelled(random(1), "single influence", {"SingleInfluence"});
       Case c = random(3);
       // Copy influence 0 (rotation and translation) over the others.
       for (std::size_t a : {std::size_t(0), std::size_t(1)}) {
@@ -599,7 +620,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         for (std::size_t j = 1; j < c.k; ++j)
           for (std::size_t s = 0; s < stride; ++s) c.inputs[a][j * stride + s] = c.inputs[a][s];
       }
-      return labelled(c, "equal influences");
+      return labelled(c, "equal influences", {"EqualInfluences"});
     });
   } else if (clause == "EDGE-1") {
     const std::vector<Real> id = {Real(0), Real(0), Real(0), Real(1)};
@@ -609,7 +630,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
     if (op == "dq_exp") c.inputs[0] = std::vector<Real>(6, Real(0));
     if (op == "from_matrix") c.inputs[0] = {Real(1), Real(0), Real(0), Real(0), Real(1), Real(0), Real(0), Real(0), Real(1)};
     if (op == "apply_vector") c.inputs[1] = flat(g.vector(-1, 1));
-    cases.push_back(labelled(c, "identity"));
+    cases.push_back(labelled(c, "identity", {"Identity"}));
   } else if (clause == "EDGE-2") {
     repeat([&](int) {
       Case c = random(2);
@@ -640,7 +661,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         c.inputs[0] = flat(a);
         c.inputs[1] = flat(g.near(a, angle));
       }
-      return labelled(c, "angle 1e-9 .. 1e-3");
+      return labelled(c, "angle 1e-9 .. 1e-3", {"SmallAngle"});
     });
   } else if (clause == "EDGE-3") {
     repeat([&](int i) {
@@ -651,7 +672,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       Quat b{a.z, -a.y, a.x, -a.w};
       if (i % 3 == 2) b = -a;  // exact antipode: flips, constant interpolation
       set_pair(g, c, op, a, b);
-      return labelled(c, i % 3 == 2 ? "exact antipode" : "dot exactly 0");
+      return labelled(c, i % 3 == 2 ? "exact antipode" : "dot exactly 0", {i % 3 == 2 ? "Antipodal" : "HemisphereTie"});
     });
   } else if (clause == "EDGE-4") {
     repeat([&](int) {
@@ -660,7 +681,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         for (Real& x : c.inputs[i]) x = -x;
       for (std::size_t i : arrays_with_stride(op, 8))
         for (Real& x : c.inputs[i]) x = -x;
-      return labelled(c, "negated quaternions");
+      return labelled(c, "negated quaternions", {"Negated"});
     });
   } else if (clause == "EDGE-5") {
     const int extreme = f32 ? 100 : 900;  // |q|^2 overflows / underflows the format
@@ -677,7 +698,8 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         const Real sb(std::ldexp(g.uniform(1.0, 2.0), -top));
         for (Real& x : c.inputs[0]) x = g.round(x * sa);
         for (Real& x : c.inputs[1]) x = g.round(x * sb);
-        return labelled(c, "unbalanced factors: |a| at the overflow threshold, b scaled by 2^-" + std::to_string(top));
+        return labelled(c, "unbalanced factors: |a| at the overflow threshold, b scaled by 2^-" + std::to_string(top),
+                        {"NonUnit", "HugeScale", "TinyScale", "UnbalancedScale"});
       }
       if (op == "from_axis_angle" || op == "rotate_about_axis") {
         // A non-unit axis: ordinary lengths 0.1..10, and lengths near the overflow and
@@ -686,7 +708,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         const int e = (i % 3 == 0) ? g.integer(-3, 3) : (i % 3 == 1 ? extreme : -extreme);
         const Real s(std::ldexp(g.uniform(1.0, 2.0), e));
         for (Real& x : c.inputs[axis]) x = g.round(x * s);
-        return labelled(c, "non-unit axis, scale 2^" + std::to_string(e));
+        return labelled(c, "non-unit axis, scale 2^" + std::to_string(e), scale_flags(e));
       }
       if (find_abi_op(op)->nway && i % 2 == 1) {
         // Influences of unequal scales, each its own power of two (ordinary 2^-4 .. 2^5 or
@@ -698,7 +720,9 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
           const Real s(std::ldexp(g.uniform(1.0, 2.0), e));
           for (int x = 0; x < stride; ++x) c.inputs[0][j * stride + x] = g.round(c.inputs[0][j * stride + x] * s);
         }
-        return labelled(c, i % 6 == 1 ? "influences of unequal scales 2^-4 .. 2^5" : "influences of unequal extreme scales");
+        return labelled(c, i % 6 == 1 ? "influences of unequal scales 2^-4 .. 2^5" : "influences of unequal extreme scales",
+                        i % 6 == 1 ? std::vector<std::string>{"NonUnit", "UnequalScales"}
+                                   : std::vector<std::string>{"NonUnit", "HugeScale", "TinyScale", "UnequalScales"});
       }
       // COMPOSE-1 is defined on the unnormalised inputs (an EDGE-5 exception): its exact product
       // must stay representable, so each factor gets half the extreme exponent.
@@ -709,21 +733,21 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         for (Real& x : c.inputs[a]) x = g.round(x * s);
       for (std::size_t a : arrays_with_stride(op, 8))
         for (Real& x : c.inputs[a]) x = g.round(x * s);
-      return labelled(c, "non-unit scale 2^" + std::to_string(e));
+      return labelled(c, "non-unit scale 2^" + std::to_string(e), scale_flags(e));
     });
   } else if (clause == "EDGE-6") {
     for (std::size_t a : arrays_with_stride(op, 4)) {
       Case c = random(2);
       std::fill(c.inputs[a].begin(), c.inputs[a].begin() + 4, Real(0));
-      cases.push_back(labelled(c, "zero quaternion in " + find_abi_op(op)->inputs[a].name));
+      cases.push_back(labelled(c, "zero quaternion in " + find_abi_op(op)->inputs[a].name, {"ZeroQuaternion"}));
       Case m = random(2);
       for (int j = 0; j < 4; ++j) m.inputs[a][j] = Real(j % 2 ? -0.0 : 0.0);
-      cases.push_back(labelled(m, "quaternion of +-0 in " + find_abi_op(op)->inputs[a].name));
+      cases.push_back(labelled(m, "quaternion of +-0 in " + find_abi_op(op)->inputs[a].name, {"NegativeZero", "ZeroQuaternion"}));
     }
     for (std::size_t a : arrays_with_stride(op, 8)) {
       Case c = random(2);
       std::fill(c.inputs[a].begin(), c.inputs[a].begin() + 4, Real(0));
-      cases.push_back(labelled(c, "zero real part in " + find_abi_op(op)->inputs[a].name));
+      cases.push_back(labelled(c, "zero real part in " + find_abi_op(op)->inputs[a].name, {"ZeroRealPart"}));
     }
     // AXANG-2, AXIS-1: a zero axis has no direction, even for a zero angle.
     const AbiOp& d = *find_abi_op(op);
@@ -732,13 +756,14 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       for (int signs = 0; signs < 2; ++signs) {
         Case c = random(2);
         for (int j = 0; j < 3; ++j) c.inputs[a][std::size_t(j)] = Real(signs && j != 1 ? -0.0 : 0.0);
-        cases.push_back(labelled(c, std::string(signs ? "axis of +-0 in " : "zero axis in ") + d.inputs[a].name));
+        cases.push_back(labelled(c, std::string(signs ? "axis of +-0 in " : "zero axis in ") + d.inputs[a].name,
+                                  signs ? std::vector<std::string>{"NegativeZero", "ZeroAxis"} : std::vector<std::string>{"ZeroAxis"}));
       }
       if (d.name == "from_axis_angle") {  // inputs {angle, axis}: the identity's angle does not help
         Case z = random(2);
         for (int j = 0; j < 3; ++j) z.inputs[a][std::size_t(j)] = Real(0);
         z.inputs[0] = {Real(0)};
-        cases.push_back(labelled(z, "zero axis in " + d.inputs[a].name + ", angle 0"));
+        cases.push_back(labelled(z, "zero axis in " + d.inputs[a].name + ", angle 0", {"ZeroAxis"}));
       }
     }
   } else if (clause == "EDGE-7") {
@@ -749,7 +774,8 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         Case c = random(2);
         const std::size_t at = std::size_t(g.integer(0, int(c.inputs[a].size()) - 1));
         c.inputs[a][at] = specials[s];
-        cases.push_back(labelled(c, std::string(s == 0 ? "NaN" : s == 1 ? "+Inf" : "-Inf") + " in " + d->inputs[a].name));
+        cases.push_back(labelled(c, std::string(s == 0 ? "NaN" : s == 1 ? "+Inf" : "-Inf") + " in " + d->inputs[a].name,
+                                  {s == 0 ? "NaN" : "Infinity"}));
       }
   } else if (clause == "EDGE-8") {
     repeat([&](int i) {
@@ -766,9 +792,9 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         // few ulp of +-1, whose axis B/|B| must still be accurate (fuzz finding
         // rotor-log-subnormal-vector-part-near-minus-1).
         for (std::size_t a : arrays_with_stride(op, 4)) c.inputs[a][3] = Real((i / 4) % 2 ? 1.0 : -1.0);
-        return labelled(c, "subnormal vector part, scalar part +-1");
+        return labelled(c, "subnormal vector part, scalar part +-1", {"Subnormal", "NegativeZero", "SubnormalAxis"});
       }
-      return labelled(c, "subnormal and -0 components");
+      return labelled(c, "subnormal and -0 components", {"Subnormal", "NegativeZero"});
     });
   } else if (clause == "EDGE-9") {
     const AbiOp* d = find_abi_op(op);
@@ -776,19 +802,22 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
     for (std::size_t a = 0; a < d->inputs.size(); ++a)
       if (d->inputs[a].name == "w") w = a;
     const char* labels[] = {"negative weight", "NaN weight", "+Inf weight", "all weights zero"};
+    const std::vector<std::string> flags[] = {
+        {"DegenerateWeights", "NegativeWeight"}, {"NaN", "DegenerateWeights"}, {"Infinity", "DegenerateWeights"},
+        {"DegenerateWeights", "ZeroWeights"}};
     for (int kind = 0; kind < 4; ++kind) {
       Case c = random(3);
       if (kind == 0) c.inputs[w][1] = Real(-0.25);
       if (kind == 1) c.inputs[w][2] = ref::ScalarTraits<Real>::nan();
       if (kind == 2) c.inputs[w][0] = Real("inf");
       if (kind == 3) std::fill(c.inputs[w].begin(), c.inputs[w].end(), Real(0));
-      cases.push_back(labelled(c, labels[kind]));
+      cases.push_back(labelled(c, labels[kind], flags[kind]));
     }
     Case empty = random(1);
     empty.k = 0;
     for (const Array& arr : d->inputs)
       if (arr.per_influence) empty.inputs[&arr - d->inputs.data()].clear();
-    cases.push_back(labelled(empty, "no influences (k = 0)"));
+    cases.push_back(labelled(empty, "no influences (k = 0)", {"DegenerateWeights", "NoInfluences"}));
   } else {
     // The operation's own clause: ordinary random inputs, obtuse pairs included by construction.
     repeat([&](int) { return random(); });
@@ -807,7 +836,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
           const int s12 = ref::hemisphere_sign(real(2), real(1));
           if (s01 * s02 == s12 || s01 == 0 || s02 == 0 || s12 == 0) continue;
           c.inputs[1][0] = Real(0);
-          return labelled(c, "first weight 0: pivot is the second influence");
+          return labelled(c, "first weight 0: pivot is the second influence", {"ZeroFirstWeight"});
         }
       });
     }
@@ -844,6 +873,7 @@ std::optional<Case> example_case(const spec::Spec& spec, const spec::Example& ex
   const conformance::Inputs in(ex.in, ex.json_path + "/in", &spec);
   Case c;
   c.label = "example " + ex.id;
+  c.flags = {"WorkedExample"};
   auto q = [](const Quat& x) { return flat(x); };
   auto qs = [&](const std::string& key) {
     std::vector<Real> r;

@@ -228,7 +228,7 @@ void run_check(const rc_impl& table, const spec::ToleranceClass& tc, const Check
       // EXP-2: feed log's output to exp and compare with the input rotation.
       const AbiOp& exp_op = *find_abi_op("exp");
       std::vector<Case> logs;
-      for (std::size_t i = 0; i < cases.size(); ++i) logs.push_back(Case{{got[i].outputs.at(0)}, 0, "log output"});
+      for (std::size_t i = 0; i < cases.size(); ++i) logs.push_back(Case{{got[i].outputs.at(0)}, 0, "log output", {}});
       std::vector<const Case*> ptrs;
       for (const Case& c : logs) ptrs.push_back(&c);
       if (hooks.before_call) hooks.before_call(exp_op, ptrs);

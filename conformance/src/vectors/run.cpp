@@ -55,7 +55,7 @@ ordered_json run_table(const rc_impl& table, const VectorSet& set, const std::fi
       }
       // EXP-2: exp on what log returned; one status for the pair.
       std::vector<engine::Case> logs;
-      for (const engine::Observed& o : got) logs.push_back(engine::Case{{o.outputs.at(0)}, 0, "log output"});
+      for (const engine::Observed& o : got) logs.push_back(engine::Case{{o.outputs.at(0)}, 0, "log output", {}});
       std::vector<const engine::Case*> ptrs;
       for (const engine::Case& c : logs) ptrs.push_back(&c);
       const std::vector<engine::Observed> second = engine::observe(table, *engine::find_abi_op("exp"), ptrs, 0);

@@ -220,7 +220,7 @@ std::vector<VectorFile> build_vector_files(const spec::Spec& spec, const BuildOp
           v.tc_id = static_cast<int>(f.tests.size()) + 1;
           v.id = id_of(f.clause, f.op, format, v.tc_id);
           v.input = c;
-          v.flags = flags_for_label(c.label);
+          v.flags = sorted_flags(c.flags);
           if (f.round_trip()) v.flags.insert(v.flags.begin(), "RoundTrip");
           engine::ReferenceResult r = reference(f, c);
           v.status = r.status;

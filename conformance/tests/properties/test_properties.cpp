@@ -89,7 +89,7 @@ engine::CaseVerdict judge(const rc_impl& table, const std::string& clause, const
   const spec::ToleranceClass& tc = the_spec().lookup(engine::tolerance_for(the_spec(), clause, d.op));
   const std::vector<engine::Observed> got = engine::observe(table, op, {&d.c}, d.c.k);
   if (clause == "EXP-2") {  // exp(log q) = q through the implementation
-    const engine::Case logged{{got.at(0).outputs.at(0)}, 0, "log output"};
+    const engine::Case logged{{got.at(0).outputs.at(0)}, 0, "log output", {}};
     const std::vector<engine::Observed> back = engine::observe(table, *engine::find_abi_op("exp"), {&logged}, 0);
     return engine::judge_round_trip(tc, d.c, got.at(0), back.at(0), d.format);
   }

@@ -21,7 +21,10 @@ namespace rotorcert::engine {
 struct Case {
   Values inputs;       // one vector per input array of the op, element values in ABI layout
   std::size_t k = 0;   // influences per element (n-way ops), else 0
-  std::string label;   // what it probes: "random", "near-antipodal", "example EX-SLERP-1-a", ...
+  std::string label;   // what it probes, in prose: "random", "near-antipodal", "example EX-SLERP-1-a", ...
+  /// The same as data: the test-vector flags (vocabulary: conformance/src/vectors/flags.cpp), set
+  /// where the case is made, never recovered from the label.
+  std::vector<std::string> flags;
 };
 
 struct Check {

@@ -31,7 +31,7 @@ struct Vector {
   int tc_id = 0;                    // 1-based position in its file
   std::string id;                   // "SLERP-1/slerp/binary64/0001": unique within an export
   engine::Case input;               // exact inputs in ABI layout, k, and the case label (the comment)
-  std::vector<std::string> flags;   // flags_for_label(label)
+  std::vector<std::string> flags;   // sorted_flags(input.flags), RoundTrip first for EXP-2
   ref::Status status = ref::Status::ok;  // the status the spec requires
   engine::Values expected;          // the reference outputs (exact at 256 bits when built, as read when parsed)
   std::string result;               // "valid", "invalid" (DOMAIN_ERROR required) or "acceptable" (ACC-1)
