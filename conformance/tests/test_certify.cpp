@@ -21,6 +21,7 @@
 #include <rotorcert/certify/report_document.hpp>
 #include <rotorcert/certify/verdict.hpp>
 #include <rotorcert/certify/isolate.hpp>
+#include <rotorcert/certify/wire.hpp>
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/registry.hpp>
 #include <rotorcert/testing/clause.hpp>
@@ -98,6 +99,26 @@ TEST(Certify, ASegfaultIsACrashWithItsInputAndTheRunGoesOn) {
   EXPECT_EQ(clause_of(cert, "EDGE-8").at("outcome"), "PASS");
   EXPECT_TRUE(fs::exists(out / "report.html"));
   EXPECT_TRUE(fs::exists(out / "report.md"));
+}
+
+// The crash site travels as fields of the child's progress frame (wire.hpp), never parsed out of
+// a line of text: a label with "] " in it stays whole, and a frame that is not a WorkingOn object
+// (torn, truncated, hostile) is kept as text with no op or label invented from it.
+TEST(Certify, TheCrashSiteComesFromTheProgressFrameAsFields) {
+  RC_CLAUSE("RESULT-3");
+  const certify::WorkingOn w{"slerp", "pair [a] and [b]", "a=[0x1p+0, 0, 0, 0] t=[0x1p+1]", "slerp [pair [a] and [b]] ..."};
+  const certify::WorkingOn back = certify::working_on_from_progress(certify::to_json(w).dump());
+  EXPECT_EQ(back.op, w.op);
+  EXPECT_EQ(back.label, w.label);
+  EXPECT_EQ(back.input, w.input);
+  EXPECT_EQ(back.text, w.text);
+  for (const std::string frame : {"{\"op\": \"slerp\", \"label\": \"x\"", "[\"slerp\"]", "slerp [random] a=[1, 0, 0, 0]",
+                                  "{\"op\": \"slerp\", \"label\": 7}"}) {
+    const certify::WorkingOn g = certify::working_on_from_progress(frame);
+    EXPECT_EQ(g.op, "") << frame;
+    EXPECT_EQ(g.label, "") << frame;
+    EXPECT_EQ(g.text, frame);
+  }
 }
 
 TEST(Certify, AHangIsATimeoutWithItsInput) {

@@ -59,12 +59,17 @@ std::string run_clause_in_child(const spec::Spec& spec, const Target& target, co
   engine::RunHooks hooks;
   hooks.one_at_a_time = one_at_a_time;
   hooks.before_call = [&](const engine::AbiOp& op, const std::vector<const engine::Case*>& cases) {
-    if (cases.size() == 1) channel.progress(op.name + " [" + cases[0]->label + "] " + engine::describe_inputs(op, *cases[0], f));
-    else channel.progress(op.name + " on a batch of " + std::to_string(cases.size()) + " cases");
+    WorkingOn w{op.name, "", "", op.name + " on a batch of " + std::to_string(cases.size()) + " cases"};
+    if (cases.size() == 1) {
+      w.label = cases[0]->label;
+      w.input = engine::describe_inputs(op, *cases[0], f);
+      w.text = op.name + " [" + w.label + "] " + w.input;
+    }
+    channel.progress(to_json(w).dump());
   };
   ClauseResult r = engine::run_clause(table, spec, clause, options.cases, hooks);
   if (r.outcome == Outcome::fail && options.detect_conventions) {
-    channel.progress("convention detection for " + clause);
+    channel.progress(to_json(WorkingOn{"", "", "", "convention detection for " + clause}).dump());
     engine::detect_conventions(table, spec, clause, options.cases, r);
   }
   return json{{"result", to_json(r, true)}, {"fp_environment", environment}}.dump();
@@ -239,14 +244,12 @@ std::vector<Certificate> certify_targets(const spec::Spec& spec, const std::vect
                                           std::to_string(pool.limits().memory_mb) + " MiB)"
                                     : "");
       r.worst_error = NAN;
-      r.worst_input = out.last_progress;
-      r.worst_detail = (timeout ? "hung while working on: " : "crashed while working on: ") + out.last_progress;
-      const auto space = out.last_progress.find(' ');
-      r.worst_op = out.last_progress.substr(0, space);
-      if (const auto lb = out.last_progress.find('['), rb = out.last_progress.find("] "); lb != std::string::npos && rb != std::string::npos) {
-        r.worst_label = out.last_progress.substr(lb + 1, rb - lb - 1);
-        r.worst_input = out.last_progress.substr(rb + 2);
-      }
+      // The crash site from the child's last progress frame, as fields (never parsed out of its text).
+      const WorkingOn w = working_on_from_progress(out.last_progress);
+      r.worst_op = w.op;
+      r.worst_label = w.label;
+      r.worst_input = w.input.empty() ? w.text : w.input;
+      r.worst_detail = (timeout ? "hung while working on: " : "crashed while working on: ") + w.text;
       slot = r;
       if (!job.pinpoint) {
         // Run the clause again one case at a time, so the report names the input.

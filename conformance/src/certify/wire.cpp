@@ -23,6 +23,22 @@ std::size_t count_or_zero(const json& j, const char* key) {
 
 }  // namespace
 
+json to_json(const WorkingOn& w) { return {{"op", w.op}, {"label", w.label}, {"input", w.input}, {"text", w.text}}; }
+
+WorkingOn working_on_from_progress(const std::string& frame) {
+  WorkingOn w;
+  w.text = frame;
+  const json j = json::parse(frame, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return w;
+  const auto field = [&](const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; };
+  if (!j.contains("text") || !j["text"].is_string()) return w;
+  w.op = field("op");
+  w.label = field("label");
+  w.input = field("input");
+  w.text = field("text");
+  return w;
+}
+
 json to_json(const TableInfo& t) {
   return {{"name", t.name},
           {"scalar", t.scalar},

@@ -25,6 +25,18 @@ engine::ClauseResult clause_result_from_json(const json& j);
 /// "detail"}), null when the clause has none.
 json worst_json(const engine::ClauseResult& r);
 
+/// What a child is about to do, sent as a progress frame before every call into the
+/// implementation (isolate.hpp keeps the last one): the op, the case's label and its inputs when
+/// one case is called alone, and a line for people. A crash or hang is pinned on these fields.
+struct WorkingOn {
+  std::string op, label, input;
+  std::string text;  // "slerp [near-antipodal pair] a=[...] ...", "loading ...", "convention detection ..."
+};
+json to_json(const WorkingOn& w);
+/// From the child's progress frame, untrusted: anything that is not a WorkingOn object (a torn or
+/// truncated frame, a progress line of an older child) becomes {text = the frame as it came}.
+WorkingOn working_on_from_progress(const std::string& frame);
+
 /// NaN and infinities have no JSON number: they become null.
 inline json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
