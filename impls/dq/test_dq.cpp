@@ -18,6 +18,7 @@
 #include <rotorcert/reference/rotation_ops.hpp>
 #include <rotorcert/testing/abi_values.hpp>
 #include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/rigid_laws.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
 extern "C" const rc_impl* rotorcert_impl_entry_dq(std::uint32_t abi, std::uint32_t index);
@@ -29,6 +30,7 @@ namespace cl = rotorcert::ref::clause;
 using ref::Real;
 using rotorcert::testing::eps_class_bars;
 using namespace rotorcert::testing::abi;
+namespace rigid_laws = rotorcert::testing::rigid_laws;
 
 // ---- the tables and single-element calls ----------------------------------------------------------
 
@@ -91,20 +93,7 @@ TEST(Dq, NormaliseMakesRealUnitAndDualOrthogonal) {
   RC_CLAUSE("EDGE-5");
   both([](auto tag) {
     using S = decltype(tag);
-    Rng rng;
-    for (int i = 0; i < 200; ++i) {
-      // Non-unit real part at scales 2^-40 .. 2^40 and a dual part with a component along r.
-      const S k = S(std::ldexp(rng.uniform(0.5, 1), int(rng.uniform(-40, 40))));
-      D<S> d;
-      for (int j = 0; j < 8; ++j) d[j] = k * S(rng.uniform(-2, 2));
-      std::uint8_t st = 9;
-      const D<S> n = normalize_dq(d, st);
-      ASSERT_EQ(st, RC_OK);
-      const auto r = rd(n);
-      EXPECT_LE((abs(ref::norm(r.real) - 1) / eps<S>()).toDouble(), strict("eps16"));
-      EXPECT_LE((abs(ref::dot(r.real, r.dual)) / eps<S>()).toDouble(), strict("eps16"));
-      EXPECT_LE(rigid_err(n, cl::DQ_4_normalize(rd(d)).value), strict("eps16"));
-    }
+    rigid_laws::normalise_makes_real_unit_and_dual_orthogonal<S>(ops<S>());
   });
 }
 
@@ -112,25 +101,7 @@ TEST(Dq, SclerpOfPureTranslationIsLinearInT) {
   RC_CLAUSE("DQ-5");
   both([](auto tag) {
     using S = decltype(tag);
-    Rng rng;
-    for (int i = 0; i < 50; ++i) {
-      const V<S> ta = rng.vec<S>(100), tb = rng.vec<S>(100);
-      const S k = S(rng.uniform(0.25, 4));  // non-unit representatives
-      const D<S> a{0, 0, 0, k, k * ta[0] / 2, k * ta[1] / 2, k * ta[2] / 2, 0};
-      const D<S> b{0, 0, 0, 1, tb[0] / 2, tb[1] / 2, tb[2] / 2, 0};
-      for (const S t : {S(-1.5), S(0), S(0.25), S(0.5), S(1), S(2.75)}) {
-        const D<S> s = sclerp(a, b, t);
-        // No rotation appears: the real part is the identity exactly.
-        EXPECT_EQ(s[0], 0);
-        EXPECT_EQ(s[1], 0);
-        EXPECT_EQ(s[2], 0);
-        EXPECT_EQ(s[3], 1);
-        ref::Vec3<Real> want;
-        for (int j = 0; j < 3; ++j) want[j] = Real(ta[j]) + Real(t) * (Real(tb[j]) - Real(ta[j]));
-        const ref::Vec3<Real> got{2 * Real(s[4]), 2 * Real(s[5]), 2 * Real(s[6])};
-        EXPECT_LE((norm3(sub3(got, want)) / max(Real(1), norm3(want)) / eps<S>()).toDouble(), strict("eps32"));
-      }
-    }
+    rigid_laws::sclerp_of_pure_translation_is_linear_in_t<S>(ops<S>());
   });
 }
 
@@ -199,22 +170,16 @@ TEST(Dq, IdentityInIdentityOut) {
   RC_CLAUSE("EDGE-1");
   both([](auto tag) {
     using S = decltype(tag);
-    const D<S> id{0, 0, 0, 1, 0, 0, 0, 0};
+    rigid_laws::identity_in_identity_out<S>(ops<S>());
+    // dq also offers the quaternion ops of Core: the identity quaternion composes and rotates exactly.
     const Q<S> one{0, 0, 0, 1};
     const V<S> p{S(0.1), S(-7), S(3e5)};
-    std::uint8_t st;
-    D<S> d;
-    ops<S>().dq_compose(1, id.data(), id.data(), d.data(), &st);
-    EXPECT_EQ(d, id);
-    EXPECT_EQ(sclerp(id, id, S(0.37)), id);
-    EXPECT_EQ(sclerp(id, id, S(-4)), id);
+    std::uint8_t st = 9;
     Q<S> q;
     ops<S>().compose(1, one.data(), one.data(), q.data(), &st);
     EXPECT_EQ(q, one);
     V<S> out;
     ops<S>().apply_vector(1, one.data(), p.data(), out.data(), &st);
-    EXPECT_EQ(out, p);
-    ops<S>().dq_apply_point(1, id.data(), p.data(), out.data(), &st);
     EXPECT_EQ(out, p);
   });
 }
@@ -257,63 +222,16 @@ TEST(Dq, OutsideTheDomainIsDomainErrorWithNaN) {
   RC_CLAUSE("EDGE-9");
   both([](auto tag) {
     using S = decltype(tag);
-    const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
-    const D<S> zero_real{0, -S(0), 0, 0, 1, 0, 0, 0}, good{0, 0, 0, 1, 0, 0, 0, 0}, with_inf{0, 0, 0, 1, inf, 0, 0, 0};
-    const V<S> p{1, 2, 3};
-    for (const D<S>& bad : {zero_real, with_inf}) {
-      std::uint8_t st = 9;
-      V<S> out;
-      ops<S>().dq_apply_point(1, bad.data(), p.data(), out.data(), &st);
-      EXPECT_EQ(st, RC_DOMAIN_ERROR);
-      for (S x : out) EXPECT_TRUE(std::isnan(x));
-    }
-    std::uint8_t st = 9;
-    D<S> out;
-    const S t = nan;
-    ops<S>().dq_sclerp(1, good.data(), good.data(), &t, out.data(), &st);
-    EXPECT_EQ(st, RC_DOMAIN_ERROR);
-    // Bad weight sets: negative, NaN, Inf, all zero (-0 included); and a zero influence with weight 0.
-    const std::array<D<S>, 2> two{good, good};
-    for (const std::array<S, 2>& w : {std::array<S, 2>{1, -1}, {nan, 1}, {inf, 1}, {0, -S(0)}}) {
-      ops<S>().dq_blend(1, 2, two.front().data(), w.data(), out.data(), &st);
-      EXPECT_EQ(st, RC_DOMAIN_ERROR);
-      for (S x : out) EXPECT_TRUE(std::isnan(x));
-    }
-    const std::array<D<S>, 2> with_zero{good, zero_real};
-    const std::array<S, 2> w{1, 0};
-    ops<S>().dq_blend(1, 2, with_zero.front().data(), w.data(), out.data(), &st);
-    EXPECT_EQ(st, RC_DOMAIN_ERROR);
-    // -0 weight first: the pivot is the first positive weight, not index 0.
-    const std::array<D<S>, 2> pivot_test{D<S>{0, 0, 0, -1, 0, 0, 0, 0}, D<S>{0, 0, 0, 1, S(0.5), 0, 0, 0}};
-    const std::array<S, 2> w2{-S(0), 1};
-    ops<S>().dq_blend(1, 2, pivot_test.front().data(), w2.data(), out.data(), &st);
-    EXPECT_EQ(st, RC_OK);
-    EXPECT_EQ(out[3], 1);
+    rigid_laws::outside_the_domain_is_domain_error_with_nan<S>(ops<S>());
   });
 }
 
-/// EDGE-3: a dot of exactly 0 between the real parts does not flip. r1 is a signed permutation
-/// of r0 (x, y, z, w) -> (-y, x, -w, z), so r0.r1 = 0 exactly and |r0| = |r1|; neither is unit
-/// in the format, so a flip decided on separately normalised copies would see +-tiny.
 TEST(Dq, BlendDoesNotFlipOnExactlyZeroDot) {
   RC_CLAUSE("EDGE-3");
   RC_CLAUSE("DQ-6");
   both([](auto tag) {
     using S = decltype(tag);
-    Rng rng;
-    for (int i = 0; i < 100; ++i) {
-      const Q<S> r0 = rng.quat<S>();
-      const Q<S> r1{-r0[1], r0[0], -r0[3], r0[2]};
-      const std::array<D<S>, 2> ds{D<S>{r0[0], r0[1], r0[2], r0[3], 0, 0, 0, 0}, D<S>{r1[0], r1[1], r1[2], r1[3], 0, 0, 0, 0}};
-      const std::array<S, 2> w{1, 1};
-      D<S> out;
-      std::uint8_t st = 9;
-      ops<S>().dq_blend(1, 2, ds.front().data(), w.data(), out.data(), &st);
-      ASSERT_EQ(st, RC_OK);
-      const auto a = rq(r0), b = rq(r1);
-      const ref::Quaternion<Real> no_flip{a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
-      EXPECT_LE((cl::METRIC_1_rotation_distance(rd(out).real, no_flip) / eps<S>()).toDouble(), strict("eps32"));
-    }
+    rigid_laws::blend_does_not_flip_on_exactly_zero_dot<S>(ops<S>());
   });
 }
 
@@ -330,35 +248,14 @@ TEST(Dq, SmokeAgainstReference) {
   RC_CLAUSE("APPLY-1");
   both([](auto tag) {
     using S = decltype(tag);
+    rigid_laws::rigid_smoke_against_reference<S>(ops<S>());
+    // dq's quaternion ops of Core.
     Rng rng;
-    std::uint8_t st;
+    std::uint8_t st = 9;
     for (int i = 0; i < 40; ++i) {
       const Q<S> q = rng.quat<S>(), q2 = rng.quat<S>();
-      const V<S> t = rng.vec<S>(10), p = rng.vec<S>(10), c = rng.vec<S>(10), u = rng.vec<S>(1);
-      const S angle = S(rng.uniform(-7, 7)), tt = S(rng.uniform(-0.5, 1.5));
-      D<S> a, b, out;
-      ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), a.data(), &st);
-      EXPECT_LE(rigid_err(a, cl::DQ_1_from_rotation_translation(rq(q), rv(t)).value), strict("eps16"));
-      b = rng.rigid<S>();
-      ops<S>().dq_compose(1, a.data(), b.data(), out.data(), &st);
-      EXPECT_LE(rigid_err(out, cl::DQ_2_compose(rd(a), rd(b)).value), strict("eps16"));
-      EXPECT_LE(rigid_err(sclerp(a, b, tt), cl::DQ_5_sclerp(rd(a), rd(b), Real(tt)).value), strict("eps32"));
-      const std::array<D<S>, 3> ds{a, b, rng.rigid<S>()};
-      const std::array<S, 3> w{S(rng.uniform(0, 1)), S(rng.uniform(0, 1)), S(rng.uniform(0, 1))};
-      ops<S>().dq_blend(1, 3, ds.front().data(), w.data(), out.data(), &st);
-      const std::vector<ref::DualQuaternion<Real>> rds{rd(ds[0]), rd(ds[1]), rd(ds[2])};
-      const std::vector<Real> rw{Real(w[0]), Real(w[1]), Real(w[2])};
-      EXPECT_LE(rigid_err(out, cl::DQ_6_dlb<Real>(rds, rw).value), strict("eps32"));
-
+      const V<S> p = rng.vec<S>(10);
       V<S> moved;
-      ops<S>().dq_apply_point(1, a.data(), p.data(), moved.data(), &st);
-      EXPECT_LE(vec_err(moved, cl::DQ_3_apply_point(rd(a), rv(p)).value, std::max({Real(1), norm3(rv(p)), norm3(rv(t))})),
-                strict("eps16"));
-      const S angle_arr = angle;
-      ops<S>().rotate_about_axis(1, c.data(), u.data(), &angle_arr, p.data(), moved.data(), &st);
-      EXPECT_LE(vec_err(moved, axis_expected(rv(c), rv(u), Real(angle), rv(p)),
-                        std::max({Real(1), norm3(rv(p)), norm3(rv(c))})),
-                strict("eps16"));
       ops<S>().apply_vector(1, q.data(), p.data(), moved.data(), &st);
       EXPECT_LE(vec_err(moved, cl::APPLY_1_apply_vector(rq(q), rv(p)).value, norm3(rv(p))), strict("eps8"));
       Q<S> prod;

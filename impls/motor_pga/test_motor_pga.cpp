@@ -21,6 +21,7 @@
 #include <rotorcert/reference/rotation_ops.hpp>
 #include <rotorcert/testing/abi_values.hpp>
 #include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/rigid_laws.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
 #include "motor.hpp"
@@ -35,6 +36,7 @@ namespace mp = rotorcert::motor_pga;
 using ref::Real;
 using rotorcert::testing::eps_class_bars;
 using namespace rotorcert::testing::abi;
+namespace rigid_laws = rotorcert::testing::rigid_laws;
 using RMV = ref::pga::MV<Real>;
 
 template <class S> const rotorcert::impl::Ops<S>& ops() {
@@ -200,19 +202,7 @@ TEST(MotorPga, NormaliseMakesRealUnitAndDualOrthogonal) {
   RC_CLAUSE("EDGE-5");
   both([](auto tag) {
     using S = decltype(tag);
-    Rng rng;
-    for (int i = 0; i < 200; ++i) {
-      const S k = S(std::ldexp(rng.uniform(0.5, 1), int(rng.uniform(-40, 40))));
-      D<S> d, n;
-      for (int j = 0; j < 8; ++j) d[j] = k * S(rng.uniform(-2, 2));
-      std::uint8_t st = 9;
-      ops<S>().dq_normalize(1, d.data(), n.data(), &st);
-      ASSERT_EQ(st, RC_OK);
-      const auto r = rd(n);
-      EXPECT_LE((abs(ref::norm(r.real) - 1) / eps<S>()).toDouble(), strict("eps16"));
-      EXPECT_LE((abs(ref::dot(r.real, r.dual)) / eps<S>()).toDouble(), strict("eps16"));
-      EXPECT_LE(rigid_err(n, cl::DQ_4_normalize(rd(d)).value), strict("eps16"));
-    }
+    rigid_laws::normalise_makes_real_unit_and_dual_orthogonal<S>(ops<S>());
   });
 }
 
@@ -220,24 +210,7 @@ TEST(MotorPga, InterpolationOfPureTranslationIsLinearInT) {
   RC_CLAUSE("DQ-5");
   both([](auto tag) {
     using S = decltype(tag);
-    Rng rng;
-    for (int i = 0; i < 50; ++i) {
-      const V<S> ta = rng.vec<S>(100), tb = rng.vec<S>(100);
-      const S k = S(rng.uniform(0.25, 4));
-      const D<S> a{0, 0, 0, k, k * ta[0] / 2, k * ta[1] / 2, k * ta[2] / 2, 0};
-      const D<S> b{0, 0, 0, 1, tb[0] / 2, tb[1] / 2, tb[2] / 2, 0};
-      for (const S t : {S(-1.5), S(0), S(0.25), S(0.5), S(1), S(2.75)}) {
-        D<S> s;
-        std::uint8_t st = 9;
-        ops<S>().dq_sclerp(1, a.data(), b.data(), &t, s.data(), &st);
-        ASSERT_EQ(st, RC_OK);
-        EXPECT_EQ((std::array<S, 4>{s[0], s[1], s[2], s[3]}), (std::array<S, 4>{0, 0, 0, 1}));
-        ref::Vec3<Real> want;
-        for (int j = 0; j < 3; ++j) want[j] = Real(ta[j]) + Real(t) * (Real(tb[j]) - Real(ta[j]));
-        const ref::Vec3<Real> got{2 * Real(s[4]), 2 * Real(s[5]), 2 * Real(s[6])};
-        EXPECT_LE((norm3(sub3(got, want)) / max(Real(1), norm3(want)) / eps<S>()).toDouble(), strict("eps32"));
-      }
-    }
+    rigid_laws::sclerp_of_pure_translation_is_linear_in_t<S>(ops<S>());
   });
 }
 
@@ -268,19 +241,7 @@ TEST(MotorPga, IdentityInIdentityOut) {
   RC_CLAUSE("EDGE-1");
   both([](auto tag) {
     using S = decltype(tag);
-    const D<S> id{0, 0, 0, 1, 0, 0, 0, 0};
-    const V<S> p{S(0.1), S(-7), S(3e5)};
-    std::uint8_t st;
-    D<S> d;
-    ops<S>().dq_compose(1, id.data(), id.data(), d.data(), &st);
-    EXPECT_EQ(d, id);
-    for (const S t : {S(0.37), S(-4)}) {
-      ops<S>().dq_sclerp(1, id.data(), id.data(), &t, d.data(), &st);
-      EXPECT_EQ(d, id);
-    }
-    V<S> out;
-    ops<S>().dq_apply_point(1, id.data(), p.data(), out.data(), &st);
-    EXPECT_EQ(out, p);
+    rigid_laws::identity_in_identity_out<S>(ops<S>());
   });
 }
 
@@ -290,54 +251,16 @@ TEST(MotorPga, OutsideTheDomainIsDomainErrorWithNaN) {
   RC_CLAUSE("EDGE-9");
   both([](auto tag) {
     using S = decltype(tag);
-    const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
-    const D<S> zero_real{0, -S(0), 0, 0, 1, 0, 0, 0}, good{0, 0, 0, 1, 0, 0, 0, 0}, with_nan{0, 0, 0, 1, 0, nan, 0, 0};
-    D<S> out;
-    std::uint8_t st = 9;
-    for (const D<S>& bad : {zero_real, with_nan}) {
-      ops<S>().dq_normalize(1, bad.data(), out.data(), &st);
-      EXPECT_EQ(st, RC_DOMAIN_ERROR);
-      for (S x : out) EXPECT_TRUE(std::isnan(x));
-    }
-    const S t = inf;
-    ops<S>().dq_sclerp(1, good.data(), good.data(), &t, out.data(), &st);
-    EXPECT_EQ(st, RC_DOMAIN_ERROR);
-    const std::array<D<S>, 2> two{good, good};
-    for (const std::array<S, 2>& w : {std::array<S, 2>{1, -1}, {nan, 1}, {inf, 1}, {0, -S(0)}}) {
-      ops<S>().dq_blend(1, 2, two.front().data(), w.data(), out.data(), &st);
-      EXPECT_EQ(st, RC_DOMAIN_ERROR);
-      for (S x : out) EXPECT_TRUE(std::isnan(x));
-    }
-    const V<S> c{1, 0, 0}, zero_axis{0, -S(0), 0}, p{0, 0, 0};
-    const S angle = 0;
-    V<S> moved;
-    ops<S>().rotate_about_axis(1, c.data(), zero_axis.data(), &angle, p.data(), moved.data(), &st);
-    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+    rigid_laws::outside_the_domain_is_domain_error_with_nan<S>(ops<S>());
   });
 }
 
-/// EDGE-3: a dot of exactly 0 between the real parts does not flip. r1 is a signed permutation
-/// of r0 (x, y, z, w) -> (-y, x, -w, z), so r0.r1 = 0 exactly and |r0| = |r1|; neither is unit
-/// in the format, so a flip decided on separately normalised copies would see +-tiny.
 TEST(MotorPga, BlendDoesNotFlipOnExactlyZeroDot) {
   RC_CLAUSE("EDGE-3");
   RC_CLAUSE("DQ-6");
   both([](auto tag) {
     using S = decltype(tag);
-    Rng rng;
-    for (int i = 0; i < 100; ++i) {
-      const Q<S> r0 = rng.quat<S>();
-      const Q<S> r1{-r0[1], r0[0], -r0[3], r0[2]};
-      const std::array<D<S>, 2> ds{D<S>{r0[0], r0[1], r0[2], r0[3], 0, 0, 0, 0}, D<S>{r1[0], r1[1], r1[2], r1[3], 0, 0, 0, 0}};
-      const std::array<S, 2> w{1, 1};
-      D<S> out;
-      std::uint8_t st = 9;
-      ops<S>().dq_blend(1, 2, ds.front().data(), w.data(), out.data(), &st);
-      ASSERT_EQ(st, RC_OK);
-      const auto a = rq(r0), b = rq(r1);
-      const ref::Quaternion<Real> no_flip{a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
-      EXPECT_LE((cl::METRIC_1_rotation_distance(rd(out).real, no_flip) / eps<S>()).toDouble(), strict("eps32"));
-    }
+    rigid_laws::blend_does_not_flip_on_exactly_zero_dot<S>(ops<S>());
   });
 }
 
@@ -352,37 +275,16 @@ TEST(MotorPga, SmokeAgainstReference) {
   RC_CLAUSE("SKIN-2");
   both([](auto tag) {
     using S = decltype(tag);
+    rigid_laws::rigid_smoke_against_reference<S>(ops<S>());
+    // DQS through the motors (SKIN-2).
     Rng rng;
-    std::uint8_t st;
+    std::uint8_t st = 9;
     for (int i = 0; i < 40; ++i) {
-      const Q<S> q = rng.quat<S>();
-      const V<S> t = rng.vec<S>(10), p = rng.vec<S>(10), c = rng.vec<S>(10), u = rng.vec<S>(1);
-      const S angle = S(rng.uniform(-7, 7)), tt = S(rng.uniform(-0.5, 1.5));
-      D<S> a, out;
-      ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), a.data(), &st);
-      EXPECT_LE(rigid_err(a, cl::DQ_1_from_rotation_translation(rq(q), rv(t)).value), strict("eps16"));
-      const D<S> b = rng.rigid<S>();
-      ops<S>().dq_compose(1, a.data(), b.data(), out.data(), &st);
-      EXPECT_LE(rigid_err(out, cl::DQ_2_compose(rd(a), rd(b)).value), strict("eps16"));
-      ops<S>().dq_sclerp(1, a.data(), b.data(), &tt, out.data(), &st);
-      EXPECT_LE(rigid_err(out, cl::DQ_5_sclerp(rd(a), rd(b), Real(tt)).value), strict("eps32"));
-      const std::array<D<S>, 3> ds{a, b, rng.rigid<S>()};
-      const std::array<S, 3> w{S(rng.uniform(0, 1)), S(rng.uniform(0, 1)), S(rng.uniform(0, 1))};
-      ops<S>().dq_blend(1, 3, ds.front().data(), w.data(), out.data(), &st);
-      const std::vector<ref::DualQuaternion<Real>> rds{rd(ds[0]), rd(ds[1]), rd(ds[2])};
-      const std::vector<Real> rw{Real(w[0]), Real(w[1]), Real(w[2])};
-      EXPECT_LE(rigid_err(out, cl::DQ_6_dlb<Real>(rds, rw).value), strict("eps32"));
-      V<S> moved;
-      ops<S>().dq_apply_point(1, a.data(), p.data(), moved.data(), &st);
-      EXPECT_LE(vec_err(moved, cl::DQ_3_apply_point(rd(a), rv(p)).value, std::max({Real(1), norm3(rv(p)), norm3(rv(t))})),
-                strict("eps16"));
-      ops<S>().rotate_about_axis(1, c.data(), u.data(), &angle, p.data(), moved.data(), &st);
-      EXPECT_LE(vec_err(moved, axis_expected(rv(c), rv(u), Real(angle), rv(p)),
-                        std::max({Real(1), norm3(rv(p)), norm3(rv(c))})),
-                strict("eps16"));
-      const std::array<Q<S>, 2> qs{q, rng.quat<S>()};
-      const std::array<V<S>, 2> ts{t, rng.vec<S>(10)};
+      const std::array<Q<S>, 2> qs{rng.quat<S>(), rng.quat<S>()};
+      const std::array<V<S>, 2> ts{rng.vec<S>(10), rng.vec<S>(10)};
       const std::array<S, 2> ws{S(rng.uniform(0, 1)), S(rng.uniform(0.1, 1))};
+      const V<S> p = rng.vec<S>(10);
+      V<S> moved;
       ops<S>().skin_dual_quaternion(1, 2, qs.front().data(), ts.front().data(), ws.data(), p.data(), moved.data(), &st);
       const std::vector<ref::Quaternion<Real>> rqs{rq(qs[0]), rq(qs[1])};
       const std::vector<ref::Vec3<Real>> rts{rv(ts[0]), rv(ts[1])};

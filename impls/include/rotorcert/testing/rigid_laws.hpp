@@ -1,0 +1,206 @@
+// Laws of the dual-quaternion ops (DQ-4, DQ-5, DQ-6, EDGE-1, EDGE-3, EDGE-6, EDGE-7, EDGE-9) that
+// every built-in table offering them must keep, written once for any table: dq and motor_pga run
+// the same checks through their ABI tables (impls/dq/test_dq.cpp, impls/motor_pga/test_motor_pga.cpp),
+// each test naming its clauses. Tolerances are the spec's eps class bars.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <rotorcert/impl.hpp>
+#include <rotorcert/reference/rigid_ops.hpp>
+#include <rotorcert/testing/abi_values.hpp>
+#include <rotorcert/testing/tolerance.hpp>
+
+namespace rotorcert::testing::rigid_laws {
+
+using namespace rotorcert::testing::abi;
+template <class S> using Ops = impl::Ops<S>;
+
+inline double strict(const char* cls) { return eps_class_bars(cls).strict; }
+
+/// Inputs from a fixed seed, so that every run and both tables see the same values.
+struct LawRng {
+  std::mt19937_64 g{20261126};
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
+  template <class S> Q<S> quat() { return {S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(0.1, 1))}; }
+  template <class S> V<S> vec(double r) { return {S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r))}; }
+  /// A rigid motion from DQ-1 of the table under test.
+  template <class S> D<S> rigid(const Ops<S>& ops) {
+    const Q<S> q = quat<S>();
+    const V<S> t = vec<S>(10);
+    D<S> d;
+    std::uint8_t st = 9;
+    ops.dq_from_rotation_translation(1, q.data(), t.data(), d.data(), &st);
+    return d;
+  }
+};
+
+/// DQ-1, DQ-2, DQ-3, DQ-5, DQ-6, AXIS-1 on random rigid motions against the reference clauses, at
+/// their classes' strict bars (a smoke check: the systematic run is the suite's).
+template <class S> void rigid_smoke_against_reference(const Ops<S>& ops) {
+  LawRng rng;
+  std::uint8_t st = 9;
+  for (int i = 0; i < 40; ++i) {
+    const Q<S> q = rng.quat<S>();
+    const V<S> t = rng.vec<S>(10), p = rng.vec<S>(10), c = rng.vec<S>(10), u = rng.vec<S>(1);
+    const S angle = S(rng.uniform(-7, 7)), tt = S(rng.uniform(-0.5, 1.5));
+    D<S> a, out;
+    ops.dq_from_rotation_translation(1, q.data(), t.data(), a.data(), &st);
+    EXPECT_LE(rigid_err(a, ref::clause::DQ_1_from_rotation_translation(rq(q), rv(t)).value), strict("eps16"));
+    const D<S> b = rng.rigid<S>(ops);
+    ops.dq_compose(1, a.data(), b.data(), out.data(), &st);
+    EXPECT_LE(rigid_err(out, ref::clause::DQ_2_compose(rd(a), rd(b)).value), strict("eps16"));
+    ops.dq_sclerp(1, a.data(), b.data(), &tt, out.data(), &st);
+    EXPECT_LE(rigid_err(out, ref::clause::DQ_5_sclerp(rd(a), rd(b), Real(tt)).value), strict("eps32"));
+    const std::array<D<S>, 3> ds{a, b, rng.rigid<S>(ops)};
+    const std::array<S, 3> w{S(rng.uniform(0, 1)), S(rng.uniform(0, 1)), S(rng.uniform(0, 1))};
+    ops.dq_blend(1, 3, ds.front().data(), w.data(), out.data(), &st);
+    const std::vector<ref::DualQuaternion<Real>> rds{rd(ds[0]), rd(ds[1]), rd(ds[2])};
+    const std::vector<Real> rw{Real(w[0]), Real(w[1]), Real(w[2])};
+    EXPECT_LE(rigid_err(out, ref::clause::DQ_6_dlb<Real>(rds, rw).value), strict("eps32"));
+    V<S> moved;
+    ops.dq_apply_point(1, a.data(), p.data(), moved.data(), &st);
+    EXPECT_LE(vec_err(moved, ref::clause::DQ_3_apply_point(rd(a), rv(p)).value,
+                      std::max({Real(1), norm3(rv(p)), norm3(rv(t))})),
+              strict("eps16"));
+    ops.rotate_about_axis(1, c.data(), u.data(), &angle, p.data(), moved.data(), &st);
+    EXPECT_LE(vec_err(moved, axis_expected(rv(c), rv(u), Real(angle), rv(p)), std::max({Real(1), norm3(rv(p)), norm3(rv(c))})),
+              strict("eps16"));
+  }
+}
+
+/// DQ-4, EDGE-5: a non-unit real part at scales 2^-40 .. 2^40 and a dual part with a component
+/// along it come out with a unit real part, a dual part orthogonal to it, and DQ-4's value.
+template <class S> void normalise_makes_real_unit_and_dual_orthogonal(const Ops<S>& ops) {
+  LawRng rng;
+  for (int i = 0; i < 200; ++i) {
+    const S k = S(std::ldexp(rng.uniform(0.5, 1), int(rng.uniform(-40, 40))));
+    D<S> d, n;
+    for (int j = 0; j < 8; ++j) d[j] = k * S(rng.uniform(-2, 2));
+    std::uint8_t st = 9;
+    ops.dq_normalize(1, d.data(), n.data(), &st);
+    ASSERT_EQ(st, RC_OK);
+    const auto r = rd(n);
+    EXPECT_LE((abs(ref::norm(r.real) - 1) / eps<S>()).toDouble(), strict("eps16"));
+    EXPECT_LE((abs(ref::dot(r.real, r.dual)) / eps<S>()).toDouble(), strict("eps16"));
+    EXPECT_LE(rigid_err(n, ref::clause::DQ_4_normalize(rd(d)).value), strict("eps16"));
+  }
+}
+
+/// DQ-5: between two pure translations (non-unit representatives) no rotation appears, the real
+/// part is the identity exactly, and the translation is linear in t, extrapolation included.
+template <class S> void sclerp_of_pure_translation_is_linear_in_t(const Ops<S>& ops) {
+  LawRng rng;
+  for (int i = 0; i < 50; ++i) {
+    const V<S> ta = rng.vec<S>(100), tb = rng.vec<S>(100);
+    const S k = S(rng.uniform(0.25, 4));
+    const D<S> a{0, 0, 0, k, k * ta[0] / 2, k * ta[1] / 2, k * ta[2] / 2, 0};
+    const D<S> b{0, 0, 0, 1, tb[0] / 2, tb[1] / 2, tb[2] / 2, 0};
+    for (const S t : {S(-1.5), S(0), S(0.25), S(0.5), S(1), S(2.75)}) {
+      D<S> s;
+      std::uint8_t st = 9;
+      ops.dq_sclerp(1, a.data(), b.data(), &t, s.data(), &st);
+      ASSERT_EQ(st, RC_OK);
+      EXPECT_EQ((std::array<S, 4>{s[0], s[1], s[2], s[3]}), (std::array<S, 4>{0, 0, 0, 1}));
+      ref::Vec3<Real> want;
+      for (int j = 0; j < 3; ++j) want[j] = Real(ta[j]) + Real(t) * (Real(tb[j]) - Real(ta[j]));
+      const ref::Vec3<Real> got{2 * Real(s[4]), 2 * Real(s[5]), 2 * Real(s[6])};
+      EXPECT_LE((norm3(sub3(got, want)) / max(Real(1), norm3(want)) / eps<S>()).toDouble(), strict("eps32"));
+    }
+  }
+}
+
+/// EDGE-1: the identity motion composes, interpolates (inside and outside [0, 1]) and moves a
+/// point to exactly itself.
+template <class S> void identity_in_identity_out(const Ops<S>& ops) {
+  const D<S> id{0, 0, 0, 1, 0, 0, 0, 0};
+  const V<S> p{S(0.1), S(-7), S(3e5)};
+  std::uint8_t st = 9;
+  D<S> d;
+  ops.dq_compose(1, id.data(), id.data(), d.data(), &st);
+  EXPECT_EQ(d, id);
+  for (const S t : {S(0.37), S(-4)}) {
+    ops.dq_sclerp(1, id.data(), id.data(), &t, d.data(), &st);
+    EXPECT_EQ(d, id);
+  }
+  V<S> out;
+  ops.dq_apply_point(1, id.data(), p.data(), out.data(), &st);
+  EXPECT_EQ(out, p);
+}
+
+/// EDGE-6, EDGE-7, EDGE-9: a zero real part, a NaN or infinite component, a non-finite t, bad
+/// weight sets, a zero influence of weight 0 and a zero rotation axis give DOMAIN_ERROR with NaN
+/// outputs; a weight of -0 first is 0, so the pivot is the first positive weight.
+template <class S> void outside_the_domain_is_domain_error_with_nan(const Ops<S>& ops) {
+  const S nan = std::numeric_limits<S>::quiet_NaN(), inf = std::numeric_limits<S>::infinity();
+  const D<S> zero_real{0, -S(0), 0, 0, 1, 0, 0, 0}, good{0, 0, 0, 1, 0, 0, 0, 0};
+  const D<S> with_inf{0, 0, 0, 1, inf, 0, 0, 0}, with_nan{0, 0, 0, 1, 0, nan, 0, 0};
+  const V<S> p{1, 2, 3};
+  for (const D<S>& bad : {zero_real, with_inf, with_nan}) {
+    std::uint8_t st = 9;
+    V<S> moved;
+    ops.dq_apply_point(1, bad.data(), p.data(), moved.data(), &st);
+    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+    for (S x : moved) EXPECT_TRUE(std::isnan(x));
+    D<S> n;
+    ops.dq_normalize(1, bad.data(), n.data(), &st);
+    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+    for (S x : n) EXPECT_TRUE(std::isnan(x));
+  }
+  std::uint8_t st = 9;
+  D<S> out;
+  for (const S t : {nan, inf}) {
+    ops.dq_sclerp(1, good.data(), good.data(), &t, out.data(), &st);
+    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+  }
+  const std::array<D<S>, 2> two{good, good};
+  for (const std::array<S, 2>& w : {std::array<S, 2>{1, -1}, {nan, 1}, {inf, 1}, {0, -S(0)}}) {
+    ops.dq_blend(1, 2, two.front().data(), w.data(), out.data(), &st);
+    EXPECT_EQ(st, RC_DOMAIN_ERROR);
+    for (S x : out) EXPECT_TRUE(std::isnan(x));
+  }
+  const std::array<D<S>, 2> with_zero{good, zero_real};
+  const std::array<S, 2> w{1, 0};
+  ops.dq_blend(1, 2, with_zero.front().data(), w.data(), out.data(), &st);
+  EXPECT_EQ(st, RC_DOMAIN_ERROR);
+  const std::array<D<S>, 2> pivot_test{D<S>{0, 0, 0, -1, 0, 0, 0, 0}, D<S>{0, 0, 0, 1, S(0.5), 0, 0, 0}};
+  const std::array<S, 2> w2{-S(0), 1};
+  ops.dq_blend(1, 2, pivot_test.front().data(), w2.data(), out.data(), &st);
+  EXPECT_EQ(st, RC_OK);
+  EXPECT_EQ(out[3], 1);
+  const V<S> c{1, 0, 0}, zero_axis{0, -S(0), 0}, origin{0, 0, 0};
+  const S angle = 0;
+  V<S> moved;
+  ops.rotate_about_axis(1, c.data(), zero_axis.data(), &angle, origin.data(), moved.data(), &st);
+  EXPECT_EQ(st, RC_DOMAIN_ERROR);
+}
+
+/// EDGE-3, DQ-6: a dot of exactly 0 between the real parts does not flip. r1 is a signed
+/// permutation of r0 (x, y, z, w) -> (-y, x, -w, z), so r0.r1 = 0 exactly and |r0| = |r1|; neither
+/// is unit in the format, so a flip decided on separately normalised copies would see +-tiny.
+template <class S> void blend_does_not_flip_on_exactly_zero_dot(const Ops<S>& ops) {
+  LawRng rng;
+  for (int i = 0; i < 100; ++i) {
+    const Q<S> r0 = rng.quat<S>();
+    const Q<S> r1{-r0[1], r0[0], -r0[3], r0[2]};
+    const std::array<D<S>, 2> ds{D<S>{r0[0], r0[1], r0[2], r0[3], 0, 0, 0, 0}, D<S>{r1[0], r1[1], r1[2], r1[3], 0, 0, 0, 0}};
+    const std::array<S, 2> w{1, 1};
+    D<S> out;
+    std::uint8_t st = 9;
+    ops.dq_blend(1, 2, ds.front().data(), w.data(), out.data(), &st);
+    ASSERT_EQ(st, RC_OK);
+    const auto a = rq(r0), b = rq(r1);
+    const ref::Quaternion<Real> no_flip{a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
+    EXPECT_LE((ref::clause::METRIC_1_rotation_distance(rd(out).real, no_flip) / eps<S>()).toDouble(), strict("eps32"));
+  }
+}
+
+}  // namespace rotorcert::testing::rigid_laws
