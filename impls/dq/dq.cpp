@@ -135,26 +135,24 @@ template <class S> Vec<S> rotate(const Quat<S>& q, const Vec<S>& v) {
 
 // ---- dual quaternions ------------------------------------------------------------------------------
 
-/// Whether a dual quaternion's parts need no scaling (runtime/ordinary_range.hpp): |r|^2 in the
-/// ordinary range, and |d|^2 too or d = 0 (then d / |r| and r'.d stay far from overflow).
-template <class S> bool ordinary(const Dual<S>& s) {
+/// Both parts of s scaled by the exact power of two that keeps |r|^2 clear of overflow and
+/// underflow (the normalisations below are invariant under a common scale), or s itself where
+/// both parts are ordinary (runtime/ordinary_range.hpp: |r|^2 ordinary, and |d|^2 too or d = 0,
+/// so that d / |r| and r'.d stay far from overflow).
+template <class S> Dual<S> safely_scaled(const Dual<S>& s) {
   const S d2 = dot(s.d, s.d);
-  return runtime::is_ordinary_square(dot(s.r, s.r)) && (d2 == 0 || runtime::is_ordinary_square(d2));
+  if (runtime::is_ordinary_square(dot(s.r, s.r)) && (d2 == 0 || runtime::is_ordinary_square(d2))) return s;
+  const int e = -scale_exponent(s.r);
+  return {scaled(s.r, e), scaled(s.d, e)};
 }
 
-/// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| after a
-/// common exact power-of-two scaling of both parts (the formula is invariant under it).
+/// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| on the
+/// safely scaled parts.
 template <class S> Dual<S> normalized(const Dual<S>& s) {
-  if (ordinary(s)) {
-    const S n = std::sqrt(dot(s.r, s.r));
-    const Quat<S> ru = s.r / n;
-    return {ru, (s.d - dot(ru, s.d) * ru) / n};
-  }
-  const int e = -scale_exponent(s.r);
-  const Quat<S> r = scaled(s.r, e), d = scaled(s.d, e);
-  const S n = std::sqrt(dot(r, r));
-  const Quat<S> ru = r / n;
-  return {ru, (d - dot(ru, d) * ru) / n};
+  const Dual<S> x = safely_scaled(s);
+  const S n = std::sqrt(dot(x.r, x.r));
+  const Quat<S> ru = x.r / n;
+  return {ru, (x.d - dot(ru, x.d) * ru) / n};
 }
 
 /// DQ-1: (q_r, 1/2 t q_r) for a unit q_r. With t pure, t q_r = (-t.v, w t + t x v).
@@ -174,15 +172,9 @@ template <class S> Vec<S> translation(const Dual<S>& u) {
 /// DQ-3 the fast way: p' = R p + t, with r and d divided by |r| (no projection needed: see
 /// translation()).
 template <class S> Vec<S> apply_point(const Dual<S>& s, const Vec<S>& p) {
-  if (ordinary(s)) {
-    const S n = std::sqrt(dot(s.r, s.r));
-    const Dual<S> u{s.r / n, s.d / n};
-    return rotate(u.r, p) + translation(u);
-  }
-  const int e = -scale_exponent(s.r);
-  const Quat<S> r = scaled(s.r, e), d = scaled(s.d, e);
-  const S n = std::sqrt(dot(r, r));
-  const Dual<S> u{r / n, d / n};
+  const Dual<S> x = safely_scaled(s);
+  const S n = std::sqrt(dot(x.r, x.r));
+  const Dual<S> u{x.r / n, x.d / n};
   return rotate(u.r, p) + translation(u);
 }
 

@@ -73,17 +73,22 @@ impl::Quat<S> rescaled(const impl::Quat<S>& q, int e) {
 template <class S>
 S norm2(const impl::Quat<S>& q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
 
-/// q/|q|; after an exact power-of-two rescaling unless |q|^2 is ordinary
-/// (runtime/ordinary_range.hpp). Precondition: is_rotation(q).
+template <class S>
+S max_abs(const impl::Quat<S>& q) { return std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])}); }
+
+/// q rescaled by the exact power of two that brings its largest |component| into [1, 2), so that
+/// its squares neither overflow nor underflow; q itself where |q|^2 is ordinary already
+/// (runtime/ordinary_range.hpp). Precondition: q finite, nonzero.
+template <class S>
+impl::Quat<S> safely_rescaled(const impl::Quat<S>& q) {
+  return runtime::is_ordinary_square(norm2(q)) ? q : rescaled(q, -scale_exponent(max_abs(q)));
+}
+
+/// q/|q|. Precondition: is_rotation(q).
 template <class S>
 impl::Quat<S> normalized(const impl::Quat<S>& q) {
-  if (const S n2 = norm2(q); runtime::is_ordinary_square(n2)) {
-    const S n = std::sqrt(n2);
-    return {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
-  }
-  const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
-  impl::Quat<S> r = rescaled(q, -scale_exponent(m));
-  const S n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+  impl::Quat<S> r = safely_rescaled(q);
+  const S n = std::sqrt(norm2(r));
   for (S& c : r) c /= n;
   return r;
 }
@@ -92,7 +97,7 @@ impl::Quat<S> normalized(const impl::Quat<S>& q) {
 template <class S>
 S norm4(const impl::Quat<S>& q) {
   if (const S n2 = norm2(q); runtime::is_ordinary_square(n2)) return std::sqrt(n2);
-  const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
+  const S m = max_abs(q);
   if (m == 0) return m;
   const int e = scale_exponent(m);
   S sum = 0;
@@ -369,8 +374,7 @@ struct RotorOps {
       out = Conv::out(gp(Conv::in_scaled(a), Conv::in_scaled(b)));
       return ok;
     }
-    const int ea = scale_exponent(std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2]), std::abs(a[3])}));
-    const int eb = scale_exponent(std::max({std::abs(b[0]), std::abs(b[1]), std::abs(b[2]), std::abs(b[3])}));
+    const int ea = scale_exponent(max_abs(a)), eb = scale_exponent(max_abs(b));
     const Rotor3<S> p = gp(Conv::in_scaled(rescaled(a, -ea)), Conv::in_scaled(rescaled(b, -eb)));
     out = Conv::out(Rotor3<S>{std::scalbn(p.s, ea + eb), std::scalbn(p.e23, ea + eb), std::scalbn(p.e31, ea + eb),
                               std::scalbn(p.e12, ea + eb)});
@@ -384,7 +388,7 @@ struct RotorOps {
       out = Conv::out(Rotor3<S>{rr.s / n2, rr.e23 / n2, rr.e31 / n2, rr.e12 / n2});
       return ok;
     }
-    const int e = scale_exponent(std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])}));
+    const int e = scale_exponent(max_abs(q));
     const Rotor3<S> r = Conv::in_scaled(rescaled(q, -e));
     const S n2 = dot(r, r);
     const Rotor3<S> rr = reverse(r);

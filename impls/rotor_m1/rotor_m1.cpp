@@ -27,10 +27,7 @@ struct Method1 : rotorcert::rotor::PhiReadout {
   /// it is -4.4e-8, which would move the hemisphere test of a tie).
   template <class S>
   static Rotor3<S> in(const Quat<S>& q) {
-    const S m = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
-    const Quat<S> r = rotorcert::runtime::is_ordinary_square(rotorcert::rotor::norm2(q))
-                          ? q
-                          : rotorcert::rotor::rescaled(q, -rotorcert::rotor::scale_exponent(m));
+    const Quat<S> r = rotorcert::rotor::safely_rescaled(q);
     const S n = rotorcert::rotor::norm3(r[0], r[1], r[2]);
     if (n == 0) return {r[3] > 0 ? S(1) : S(-1), S(0), S(0), S(0)};
     S c = 0, s = 1;
