@@ -125,32 +125,19 @@ int Inverse(std::size_t n, const float* q, float* out, std::uint8_t* status) {
   return 0;
 }
 
-/// AXANG-1 (kernels: axis_angle): two output arrays, so its own loop; the tail through a padded
-/// block as for_blocks does.
+/// AXANG-1 (kernels: axis_angle): two output arrays, the angle and the axis.
 int ToAxisAngle(std::size_t n, const float* q, float* angle, float* axis, std::uint8_t* status) {
-  const D d;
-  const std::size_t lanes = hn::Lanes(d);
-  const auto block = [&](const float* pq, float* pa, float* px, std::uint8_t* s) {
-    const Quat a = load_quat(pq);
-    const M bad = hn::Not(is_rotation(a));
-    V ang;
-    Vec3 ax;
-    axis_angle(a, ang, ax);
-    hn::StoreU(hn::IfThenElse(bad, nan_v(), ang), d, pa);
-    store_vec3(poison(bad, ax), px);
-    store_status(bad, s);
-  };
-  std::size_t i = 0;
-  for (; i + lanes <= n; i += lanes) block(q + 4 * i, angle + i, axis + 3 * i, status + i);
-  if (i == n) return 0;
-  const std::size_t count = n - i;
-  Padded pad;
-  HWY_ALIGN float oa[kMaxLanes], ox[3 * kMaxLanes];
-  std::uint8_t s[kMaxLanes];
-  block(pad.from(q + 4 * i, count, 4, kIdentity), oa, ox, s);
-  std::memcpy(angle + i, oa, count * sizeof(float));
-  std::memcpy(axis + 3 * i, ox, 3 * count * sizeof(float));
-  std::memcpy(status + i, s, count);
+  for_blocks<1, 2>(n, {q}, {4}, {kIdentity}, {angle, axis}, {1, 3}, status,
+                   [](const float* const* p, float* const* o, std::uint8_t* s) {
+                     const Quat a = load_quat(p[0]);
+                     const M bad = hn::Not(is_rotation(a));
+                     V ang;
+                     Vec3 ax;
+                     axis_angle(a, ang, ax);
+                     hn::StoreU(hn::IfThenElse(bad, nan_v(), ang), D(), o[0]);
+                     store_vec3(poison(bad, ax), o[1]);
+                     store_status(bad, s);
+                   });
   return 0;
 }
 

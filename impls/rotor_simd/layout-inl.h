@@ -108,29 +108,45 @@ constexpr float kZero3[3] = {0, 0, 0};
 constexpr float kZero1[1] = {0};
 constexpr float kUnitZ[3] = {0, 0, 1};
 
-/// Runs block(offset, in-pointers..., out-pointer, status) over n elements: full blocks in
-/// place, the tail through padded copies. `in_width` / `fill` describe each input array.
-template <std::size_t kIns, class Block>
+/// Runs block(in-pointers, out-pointers, status) over n elements: full blocks in place, the tail
+/// through padded copies. `in_width` / `fill` describe each input array, `out_width` each output
+/// array (to_axis_angle has two: the angle and the axis).
+template <std::size_t kIns, std::size_t kOuts, class Block>
 HWY_INLINE void for_blocks(std::size_t n, const float* const (&in)[kIns], const std::size_t (&in_width)[kIns],
-                           const float* const (&fill)[kIns], float* out, std::size_t out_width,
-                           std::uint8_t* status, const Block& block) {
+                           const float* const (&fill)[kIns], float* const (&out)[kOuts],
+                           const std::size_t (&out_width)[kOuts], std::uint8_t* status, const Block& block) {
   const std::size_t lanes = hn::Lanes(D());
   std::size_t i = 0;
   for (; i + lanes <= n; i += lanes) {
     const float* p[kIns];
+    float* o[kOuts];
     for (std::size_t a = 0; a < kIns; ++a) p[a] = in[a] + i * in_width[a];
-    block(p, out + i * out_width, status + i);
+    for (std::size_t a = 0; a < kOuts; ++a) o[a] = out[a] + i * out_width[a];
+    block(p, o, status + i);
   }
   if (i == n) return;
   const std::size_t count = n - i;
   Padded pads[kIns];
   const float* p[kIns];
   for (std::size_t a = 0; a < kIns; ++a) p[a] = pads[a].from(in[a] + i * in_width[a], count, in_width[a], fill[a]);
-  HWY_ALIGN float o[16 * kMaxLanes];
+  HWY_ALIGN float tail[kOuts][16 * kMaxLanes];
+  float* o[kOuts];
+  for (std::size_t a = 0; a < kOuts; ++a) o[a] = tail[a];
   std::uint8_t s[kMaxLanes];
   block(p, o, s);
-  std::memcpy(out + i * out_width, o, count * out_width * sizeof(float));
+  for (std::size_t a = 0; a < kOuts; ++a) std::memcpy(out[a] + i * out_width[a], tail[a], count * out_width[a] * sizeof(float));
   std::memcpy(status + i, s, count);
+}
+
+/// The same with one output array: block(in-pointers, out-pointer, status).
+template <std::size_t kIns, class Block>
+HWY_INLINE void for_blocks(std::size_t n, const float* const (&in)[kIns], const std::size_t (&in_width)[kIns],
+                           const float* const (&fill)[kIns], float* out, std::size_t out_width,
+                           std::uint8_t* status, const Block& block) {
+  for_blocks<kIns, 1>(n, in, in_width, fill, {out}, {out_width}, status,
+                      [&](const float* const* p, float* const* o, std::uint8_t* s) ROTORCERT_SIMD_INLINE {
+                        block(p, o[0], s);
+                      });
 }
 
 // ---- 2a'. the fast paths' lane order ------------------------------------------------------
