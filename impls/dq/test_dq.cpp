@@ -65,20 +65,10 @@ template <class S> V<S> skin(bool dual, const std::vector<Q<S>>& q, const std::v
 
 // ---- random inputs (fixed seed: reproducible) --------------------------------------------------------
 
-struct Rng {
-  std::mt19937_64 g{20240611};
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
-  template <class S> Q<S> quat() { return {S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(0.1, 1))}; }
-  template <class S> V<S> vec(double r) { return {S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r))}; }
+struct Rng : rigid_laws::LawRng {
+  Rng() : LawRng(20240611) {}
   /// A rigid motion from DQ-1 of the table under test.
-  template <class S> D<S> rigid() {
-    const Q<S> q = quat<S>();
-    const V<S> t = vec<S>(10);
-    D<S> d;
-    std::uint8_t st;
-    ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), d.data(), &st);
-    return d;
-  }
+  template <class S> D<S> rigid() { return LawRng::rigid<S>(ops<S>()); }
 };
 
 template <class F> void both(F f) {

@@ -82,9 +82,8 @@ template <class S> double coefficient_err(const std::array<Real, 8>& got, const 
   return (e / scale / eps<S>()).toDouble();
 }
 
-struct Rng {
-  std::mt19937_64 g{20240612};
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g); }
+struct Rng : rigid_laws::LawRng {
+  Rng() : LawRng(20240612) {}
   template <class S> mp::Motor<S> motor(double r) {
     return {S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r)),
             S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r))};
@@ -92,16 +91,6 @@ struct Rng {
   template <class S> mp::Motor<S> integer_motor() {
     const auto k = [&] { return S(std::floor(uniform(-8, 9))); };
     return {k(), k(), k(), k(), k(), k(), k(), k()};
-  }
-  template <class S> Q<S> quat() { return {S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(-1, 1)), S(uniform(0.1, 1))}; }
-  template <class S> V<S> vec(double r) { return {S(uniform(-r, r)), S(uniform(-r, r)), S(uniform(-r, r))}; }
-  template <class S> D<S> rigid() {
-    const Q<S> q = quat<S>();
-    const V<S> t = vec<S>(10);
-    D<S> d;
-    std::uint8_t st;
-    ops<S>().dq_from_rotation_translation(1, q.data(), t.data(), d.data(), &st);
-    return d;
   }
 };
 
