@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
     int files = 0;
     for (const rc_impl* t : impl::builtin_tables()) {
       const std::string name = t->name;
-      if (name != "dq" && name != "rotor_m2" && name != "glm_quat" && name != "eigen_quat" && name != "rotor_simd") continue;
+      if (name != "dq" && name != "rotor_m2" && name != "rotor_gen" && name != "glm_quat" && name != "eigen_quat" && name != "rotor_simd") continue;
       const ref::Format f = t->scalar == RC_SCALAR_FLOAT32 ? ref::Format::binary32 : ref::Format::binary64;
       const auto j = vectors::run_table(*t, fuzz::results_vector_set(f), "results.json");
       write(dir / (name + "_" + vectors::scalar_name(f) + ".json"), j.dump(1));

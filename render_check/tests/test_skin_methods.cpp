@@ -64,7 +64,8 @@ TEST(SkinMethods, CapabilitiesFollowTheAbi) {
   std::set<std::string> names;
   for (const auto& m : builtin_methods()) names.insert(m.name());
   for (const char* n : {"glm_quat float LBS", "eigen_quat double LBS", "dq double DQS", "motor_pga float DQS",
-                        "rotor_m1 double LBS", "rotor_m2 float LBS", "rotor_simd float LBS", "paper_literal float LBS"})
+                        "rotor_m1 double LBS", "rotor_m2 float LBS", "rotor_simd float LBS", "rotor_gen float LBS",
+                        "rotor_gen double LBS", "paper_literal float LBS"})
     EXPECT_EQ(names.count(n), 1u) << n;
   EXPECT_EQ(names.count("glm_mix float LBS") + names.count("glm_mix float DQS"), 0u);
 
@@ -94,8 +95,8 @@ TEST(SkinMethods, ConformanceIsReadFromClaimsAndExpectedFailures) {
   for (const auto& m : builtin_methods())
     if (conforming(m)) conf.insert(m.name());
   for (const char* n : {"rotor_m1 float LBS", "rotor_m1 double LBS", "rotor_m2 float LBS", "rotor_m2 double LBS",
-                        "rotor_simd float LBS", "dq float DQS", "dq double DQS", "motor_pga float DQS",
-                        "motor_pga double DQS"})
+                        "rotor_simd float LBS", "rotor_gen float LBS", "rotor_gen double LBS", "dq float DQS",
+                        "dq double DQS", "motor_pga float DQS", "motor_pga double DQS"})
     EXPECT_EQ(conf.count(n), 1u) << n;
   for (const char* n : {"paper_literal float LBS", "glm_quat double LBS", "glm_quat float DQS", "eigen_quat double LBS"})
     EXPECT_EQ(conf.count(n), 0u) << n;

@@ -156,6 +156,7 @@ TEST(VisRender, ConformingMethodsPassOnTheMediumCharacter) {
   for (const auto& m : methods) names.insert(m.name());
   // The brief's conforming implementations are among them, both techniques.
   for (const char* n : {"rotor_m1 float LBS", "rotor_m2 float LBS", "rotor_m2 double LBS", "rotor_simd float LBS",
+                        "rotor_gen float LBS",
                         "dq float DQS", "dq double DQS", "motor_pga float DQS"})
     EXPECT_EQ(names.count(n), 1u) << n;
   RenderCheckOptions opt;
