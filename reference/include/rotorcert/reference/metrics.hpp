@@ -86,11 +86,13 @@ T METRIC_3_vector_error(const Vec3<T>& v, const Vec3<T>& ref, const T& tiny = T(
 template <class T>
 T METRIC_4_matrix_error(const Mat3<T>& m, const Mat3<T>& ref) {
   using std::abs;
+  using std::max;
   T e(0);
   for (int i = 0; i < 9; ++i) {
     const T d = abs(m[i] - ref[i]);
     if (ScalarTraits<T>::is_nan(d)) return d;  // a NaN entry is an infinite error, not a skipped one
-    if (d > e) e = d;
+    e = max(e, d);  // max, not a comparison: in interval arithmetic (ref::Bounded) two equal errors
+                    // would make "d > e" undecidable, while max is continuous and needs no branch
   }
   return e;
 }

@@ -67,7 +67,7 @@ std::vector<T> scaled_weights(std::span<const T> w) {
 template <class T>
 T largest_component(const Quaternion<T>& q) {
   using std::abs;
-  return std::max({abs(q.w), abs(q.x), abs(q.y), abs(q.z)});
+  return largest_magnitude(q.w, q.x, q.y, q.z);
 }
 
 /// q / s, component by component (not q * (1/s): 1/s overflows for a subnormal s in binary64).
@@ -456,7 +456,7 @@ Result<Vec3<T>> AXIS_1_rotate_about_line(const Vec3<T>& c, const Vec3<T>& u, con
   using std::cos;
   using std::sin;
   if (!finite(c) || !finite(u) || !finite(angle) || !finite(p)) return domain_error<Vec3<T>>();
-  const T largest = std::max({abs(u[0]), abs(u[1]), abs(u[2])});
+  const T largest = largest_magnitude(u[0], u[1], u[2]);
   if (largest == 0) return domain_error<Vec3<T>>();
   const Vec3<T> us{u[0] / largest, u[1] / largest, u[2] / largest};
   const T n = pga::norm3(us);

@@ -7,6 +7,7 @@
 // picks MPFR's correctly rounded functions for mpreal and <cmath> for double.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -48,5 +49,18 @@ template <> struct ScalarTraits<Real> {
   static double to_double(const Real& x) { return x.toDouble(); }
   static Real epsilon() { return mpfr::machine_epsilon(); }
 };
+
+/// The largest of |x|, |y|, ...: a scale factor of the overflow-free normalisations. Taken with
+/// max, never with comparisons: in the fuzzers' interval arithmetic (ref::Bounded) two nearly equal
+/// magnitudes leave a comparison undecided, while max is continuous and needs no branch. Any of the
+/// magnitudes would do as the scale; for exact arithmetic this is the plain maximum.
+template <class T, class... Rest>
+T largest_magnitude(const T& x, const Rest&... rest) {
+  using std::abs;
+  using std::max;
+  T m = abs(x);
+  ((m = max(m, T(abs(rest)))), ...);
+  return m;
+}
 
 }  // namespace rotorcert::ref
