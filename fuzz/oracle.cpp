@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <set>
+#include <unordered_map>
 
 #include <nlohmann/json.hpp>
 
@@ -272,6 +274,26 @@ bool t_beyond_strict_bar(const AbiOp& op, const spec::ToleranceClass& tc, const 
   return false;
 }
 
+/// What one perturbed input p does to the judgement at the MPFR level: its reference status differs
+/// (nothing is judged), or its result rounded to the format is not within the strict bar (the
+/// numbers are not judged), or neither. `numbers`: whether the numbers are still to be judged.
+enum class Perturbation { agrees, beyond_strict_bar, status_differs };
+Perturbation mpfr_perturbation(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
+                               const Case& p, int pattern, bool numbers, const engine::ReferenceResult& want) {
+  const engine::ReferenceResult r = op.reference(p.inputs, c.k);
+  if (r.status != want.status) return Perturbation::status_differs;
+  if (!numbers) return Perturbation::agrees;
+  Observed o;
+  o.status = RC_OK;
+  o.outputs = r.outputs;
+  for (auto& arr : o.outputs)
+    for (Real& x : arr) x = engine::round_to(f, x);
+  const bool debug = fuzz_debug();
+  const engine::CaseVerdict v = engine::judge_case_against(op, tc, c, o, f, want, debug);
+  if (debug) std::fprintf(stderr, "perturbation %d: %g eps (%s)\n", pattern, v.error, v.detail.c_str());
+  return v.verdict == ref::Verdict::pass ? Perturbation::agrees : Perturbation::beyond_strict_bar;
+}
+
 Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
                    const engine::ReferenceResult& want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
@@ -279,19 +301,9 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
   bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f);
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
-    const engine::ReferenceResult r = op.reference(p.inputs, c.k);
-    if (r.status != want.status) return Judge::nothing;
-    if (!numbers) continue;
-    Observed o;
-    o.status = RC_OK;
-    o.outputs = r.outputs;
-    for (auto& arr : o.outputs)
-      for (Real& x : arr) x = engine::round_to(f, x);
-    const bool debug = fuzz_debug();
-    const engine::CaseVerdict v = engine::judge_case_against(op, tc, c, o, f, want, debug);
-    if (debug)
-      std::fprintf(stderr, "perturbation %d: %g eps (%s)\n", pattern, v.error, v.detail.c_str());
-    if (v.verdict != ref::Verdict::pass) numbers = false;
+    const Perturbation step = mpfr_perturbation(op, tc, c, f, p, pattern, numbers, want);
+    if (step == Perturbation::status_differs) return Judge::nothing;
+    if (step == Perturbation::beyond_strict_bar) numbers = false;
   }
   if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (want.status == ref::Status::domain_error || numbers) return Judge::everything;
@@ -302,11 +314,15 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
 }
 
 /// how_to_judge from the fast level (engine/fast_oracle.hpp): the same decisions, each taken only
-/// where the bounds settle it; nullopt sends the element to MPFR. A perturbed result's verdict is
-/// taken only where every way its exact value may round to the format gives it, so a decided
-/// answer is the one how_to_judge gives.
+/// where the bounds settle it. A perturbation the bounds do not settle is taken at the MPFR level
+/// alone (mpfr_perturbation against `mpfr_want()`, the element's exact reference, computed on first
+/// use), so the answer is how_to_judge's and the other perturbations stay cheap. nullopt (the whole
+/// element to MPFR) only where an output is too near the headroom threshold to read. A perturbed
+/// result's verdict is taken at the fast level only where every way its exact value may round to
+/// the format gives it.
 std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
-                                       const engine::FastReference& want, const std::optional<engine::FastCase>& fc) {
+                                       const engine::FastReference& want, const std::optional<engine::FastCase>& fc,
+                                       const std::function<const engine::ReferenceResult&()>& mpfr_want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   const bool ok = want.status == ref::Status::ok;
   if (ok) {  // within_headroom reads the outputs' magnitudes: keep clear of its threshold
@@ -317,38 +333,58 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
   }
   bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f);
   const bool debug = fuzz_debug();
-  auto decline = [&](const char* why) -> std::optional<Judge> {
-    if (debug) std::fprintf(stderr, "fast oracle: %s: %s\n", op.name.c_str(), why);
-    return std::nullopt;
+  auto to_mpfr = [&](const char* why, const Case& p, int pattern) {
+    if (debug) std::fprintf(stderr, "fast oracle: %s: %s; this perturbation goes to MPFR\n", op.name.c_str(), why);
+    return mpfr_perturbation(op, tc, c, f, p, pattern, numbers, mpfr_want());
   };
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
     const auto r = engine::fast_reference(op, p.inputs, c.k);
-    if (!r) return decline("a perturbed reference is undecided");
-    if (r->status != want.status) return Judge::nothing;
-    if (!numbers) continue;
-    // The perturbed result as rounded to the format (one candidate per way the exact one may
-    // round), judged against the element's reference: PASS for every candidate, or (where no
-    // acceptable convention could make it an ACCEPTABLE PASS) surely beyond the strict bar for
-    // every one.
-    const auto roundings = engine::fast_roundings(*r, f);
-    if (!roundings) return decline("a perturbed result straddles too many rounding points");
-    bool all_pass = true, none_pass = !engine::may_be_acceptable(op);
-    for (const engine::Values& outputs : *roundings) {
-      Observed o;
-      o.status = RC_OK;
-      o.outputs = outputs;
-      const auto v = fc ? engine::fast_verdicts(op, *fc, o, want) : std::nullopt;
-      if (!v) return decline("a perturbed result's error is not bounded");
-      all_pass = all_pass && v->worst == ref::Verdict::pass;
-      none_pass = none_pass && v->best != ref::Verdict::pass;
+    std::optional<Perturbation> step;
+    if (!r) {
+      step = to_mpfr("a perturbed reference is undecided", p, pattern);
+    } else if (r->status != want.status) {
+      step = Perturbation::status_differs;
+    } else if (!numbers) {
+      step = Perturbation::agrees;
+    } else if (const auto roundings = engine::fast_roundings(*r, f); !roundings) {
+      // More roundings than are worth enumerating: the error over all of them at once.
+      const auto v = fc ? engine::fast_verdicts_of_rounding(op, *fc, *r, f, want) : std::nullopt;
+      if (v && v->worst == ref::Verdict::pass) step = Perturbation::agrees;
+      else if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op)) step = Perturbation::beyond_strict_bar;
+      else {
+        if (debug)
+          std::fprintf(stderr, "fast oracle: %s: verdicts over the roundings %s\n", op.name.c_str(),
+                       v ? (std::to_string(static_cast<int>(v->best)) + ".." + std::to_string(static_cast<int>(v->worst))).c_str()
+                         : "not bounded");
+        step = to_mpfr("a perturbed result straddles too many rounding points", p, pattern);
+      }
+    } else {
+      // The perturbed result as rounded to the format (one candidate per way the exact one may
+      // round), judged against the element's reference: PASS for every candidate, or (where no
+      // acceptable convention could make it an ACCEPTABLE PASS) surely beyond the strict bar for
+      // every one.
+      bool all_pass = true, none_pass = !engine::may_be_acceptable(op), bounded = fc.has_value();
+      for (const engine::Values& outputs : *roundings) {
+        if (!bounded) break;
+        Observed o;
+        o.status = RC_OK;
+        o.outputs = outputs;
+        const auto v = engine::fast_verdicts(op, *fc, o, want);
+        if (!v) {
+          bounded = false;
+          break;
+        }
+        all_pass = all_pass && v->worst == ref::Verdict::pass;
+        none_pass = none_pass && v->best != ref::Verdict::pass;
+      }
+      if (!bounded) step = to_mpfr("a perturbed result's error is not bounded", p, pattern);
+      else if (all_pass) step = Perturbation::agrees;
+      else if (none_pass) step = Perturbation::beyond_strict_bar;
+      else step = to_mpfr("a perturbed result sits on the strict bar", p, pattern);
     }
-    if (all_pass) continue;
-    if (none_pass) {
-      numbers = false;
-      continue;
-    }
-    return decline("a perturbed result sits on the strict bar");
+    if (*step == Perturbation::status_differs) return Judge::nothing;
+    if (*step == Perturbation::beyond_strict_bar) numbers = false;
   }
   if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (!ok || numbers) return Judge::everything;
@@ -389,17 +425,82 @@ OracleMode oracle_mode() {
 /// to see how much of what a harness generates is judged in full.
 struct Stats {
   std::map<std::string, std::array<std::size_t, 3>> counts;
-  std::map<std::string, std::size_t> fast;  // elements the fast level judged without MPFR
+  std::map<std::string, std::size_t> fast;      // elements the fast level judged without MPFR
+  std::map<std::string, std::size_t> memo_hits;  // elements whose judgement came from the memo
   ~Stats() {
     if (std::getenv("ROTORCERT_FUZZ_STATS") == nullptr) return;
+    auto at = [](const std::map<std::string, std::size_t>& m, const std::string& k) {
+      return m.count(k) ? m.at(k) : std::size_t{0};
+    };
     for (const auto& [op, c] : counts)
-      std::fprintf(stderr, "stats: %-28s everything %8zu  status only %8zu  nothing %8zu  without MPFR %8zu\n",
-                   op.c_str(), c[0], c[1], c[2], fast.count(op) ? fast.at(op) : std::size_t{0});
+      std::fprintf(stderr,
+                   "stats: %-28s everything %8zu  status only %8zu  nothing %8zu  without MPFR %8zu  from the memo %8zu\n",
+                   op.c_str(), c[0], c[1], c[2], at(fast, op), at(memo_hits, op));
   }
 };
 Stats& stats() {
   static Stats s;
   return s;
+}
+
+/// What an element's judgement needs besides the tables' outputs: a pure function of the op, the
+/// format, k and the element's input bits, so it is kept between executions. libFuzzer's
+/// mutations mostly change one element of a batch and leave the others' bits as they were, and
+/// the reference evaluations (fast and MPFR, of the element and of its perturbations) are nearly
+/// all of an execution's cost. The tables are still called and judged on every execution: a
+/// table's result may depend on an element's place in the batch (SIMD lanes and tails).
+struct ElementJudgement {
+  Judge judge = Judge::nothing;
+  ref::Status status = ref::Status::ok;
+  std::optional<engine::FastReference> fast;
+  std::optional<engine::FastCase> fast_case;
+  std::optional<engine::ReferenceResult> exact;
+};
+
+/// The memo, keyed by the op, format, k and the element's raw input words. Bounded: emptied
+/// when full (a simple policy: the corpus inputs a campaign keeps mutating refill it at once).
+class JudgementMemo {
+ public:
+  static constexpr std::size_t kCapacity = 1 << 13;
+
+  static std::string key(const Decoded& d, std::size_t e) {
+    std::string k;
+    k.reserve(64);
+    k.append(d.op->name).push_back('\0');
+    k.push_back(d.f64 ? 'd' : 'f');
+    k.push_back(static_cast<char>(d.k));
+    const std::size_t word = d.f64 ? 8 : 4;
+    for (std::size_t a = 0; a < d.op->inputs.size(); ++a) {
+      const std::size_t bytes = element_count(*d.op, a, d.k) * word;
+      k.append(reinterpret_cast<const char*>(d.raw[a].data() + e * bytes), bytes);
+    }
+    return k;
+  }
+  ElementJudgement* find(const std::string& k) {
+    const auto it = map_.find(k);
+    return it == map_.end() ? nullptr : &it->second;
+  }
+  void put(std::string k, ElementJudgement j) {
+    if (map_.size() >= kCapacity) map_.clear();
+    map_.insert_or_assign(std::move(k), std::move(j));
+  }
+
+ private:
+  std::unordered_map<std::string, ElementJudgement> map_;
+};
+
+JudgementMemo& memo() {
+  static JudgementMemo m;
+  return m;
+}
+
+/// ROTORCERT_FUZZ_MEMO=0 turns the memo off (to measure what it saves, or to rule it out).
+bool memo_enabled() {
+  static const bool on = [] {
+    const char* env = std::getenv("ROTORCERT_FUZZ_MEMO");
+    return env == nullptr || std::string(env) != "0";
+  }();
+  return on;
 }
 
 }  // namespace
@@ -501,12 +602,33 @@ int check(const Decoded& d) {
     if (!exact[e]) exact[e] = op.reference(d.cases[e].inputs, d.k);
     return *exact[e];
   };
+  // The memo serves the fast mode only: "mpfr" measures MPFR alone, "both" compares the levels
+  // on every element it sees.
+  const bool use_memo = mode == OracleMode::fast && memo_enabled();
+  std::vector<std::string> keys(use_memo ? d.n : 0);  // (keys[e] is moved from only after its last use)
+  std::vector<bool> remembered(d.n, false);
   for (std::size_t e = 0; e < d.n; ++e) {
+    if (use_memo) {
+      keys[e] = JudgementMemo::key(d, e);
+      if (const ElementJudgement* m = memo().find(keys[e])) {
+        judge[e] = m->judge;
+        status[e] = m->status;
+        fast[e] = m->fast;
+        fast_case[e] = m->fast_case;
+        exact[e] = m->exact;
+        remembered[e] = true;
+        ++stats().counts[op.name][static_cast<std::size_t>(judge[e])];
+        ++stats().memo_hits[op.name];
+        continue;
+      }
+    }
     std::optional<Judge> j;
     if (mode != OracleMode::mpfr) fast[e] = engine::fast_reference(op, d.cases[e].inputs, d.k);
     if (fast[e]) {
       fast_case[e] = engine::fast_case(op, tc, d.cases[e], f);
-      j = how_to_judge_fast(op, tc, d.cases[e], f, *fast[e], fast_case[e]);
+      j = how_to_judge_fast(op, tc, d.cases[e], f, *fast[e], fast_case[e], [&]() -> const engine::ReferenceResult& {
+        return mpfr_want(e);
+      });
     }
     if (!j || mode == OracleMode::both) {
       const Judge m = how_to_judge(op, tc, d.cases[e], f, mpfr_want(e));
@@ -566,9 +688,22 @@ int check(const Decoded& d) {
         }
       const std::vector<Observed> back = call_raw(*t, exp_op, d.n, 0, raw);
       const std::string rt_name = engine::tolerance_for(s, "EXP-2", "log");
+      const spec::ToleranceClass& rt_tc = s.lookup(rt_name);
       for (std::size_t e = 0; e < d.n; ++e) {
         if (status[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
-        const engine::CaseVerdict v = engine::judge_round_trip(s.lookup(rt_name), d.cases[e], got[e], back[e], f);
+        // Surely not a FAIL at the fast level: MPFR's distance is not needed (in "both" mode it
+        // is computed as well, and a FAIL there is a disagreement).
+        if (mode != OracleMode::mpfr)
+          if (const auto fc = engine::fast_case(op, rt_tc, d.cases[e], f)) {
+            const auto fv = engine::fast_round_trip_verdicts(*fc, d.cases[e], got[e], back[e]);
+            if (fv && fv->worst != ref::Verdict::fail) {
+              if (mode == OracleMode::both &&
+                  engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f).verdict == ref::Verdict::fail)
+                oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
+              continue;
+            }
+          }
+        const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f);
         if (v.verdict == ref::Verdict::fail) {
           engine::CaseVerdict shown = v;
           shown.detail += "; log q = [";
@@ -579,6 +714,15 @@ int check(const Decoded& d) {
       }
     }
   }
+  // Remembered after the tables: an MPFR reference they needed is kept too.
+  if (use_memo)
+    for (std::size_t e = 0; e < d.n; ++e) {
+      if (!remembered[e])
+        memo().put(std::move(keys[e]), ElementJudgement{judge[e], status[e], std::move(fast[e]), std::move(fast_case[e]),
+                                                        std::move(exact[e])});
+      else if (ElementJudgement* m = memo().find(keys[e]); m && exact[e] && !m->exact)
+        m->exact = std::move(exact[e]);  // (an entry the loop above evicted is simply not updated)
+    }
   return tables;
 }
 

@@ -146,4 +146,68 @@ TEST(FastOracle, AWrongTermIsCaught) {
   EXPECT_EQ(caught, by_op.size()) << "every op's wrong term must be caught";
 }
 
+/// EXP-2 (exp(log q) = q through the implementation) at the fast level against judge_round_trip:
+/// exp's output as q rounded to the format and moved by 0 .. 2000 eps in one component, on both
+/// sides of the bars. Returns the number of disagreements (surely PASS or surely not FAIL where
+/// MPFR says otherwise) and counts the observations the fast level decided.
+std::size_t round_trip_disagreements(std::size_t& decided, std::string& first) {
+  std::size_t wrong = 0;
+  engine::CaseOptions options;
+  options.cases_per_family = 32;
+  const engine::AbiOp& log_op = *engine::find_abi_op("log");
+  for (const ref::Format f : {ref::Format::binary32, ref::Format::binary64}) {
+    const auto checks = engine::checks_for_clause(the_spec(), "EXP-2", f, options, [](const std::string&) { return true; });
+    for (const engine::Check& check : checks) {
+      if (!check.log_exp_round_trip) continue;
+      const spec::ToleranceClass& tc = the_spec().lookup(engine::tolerance_for(the_spec(), "EXP-2", "log"));
+      for (const engine::Case& c : check.cases) {
+        const auto fc = engine::fast_case(log_op, tc, c, f);
+        if (!fc) continue;
+        engine::Observed log_got;  // only its status and call matter to the round trip's judge
+        log_got.status = RC_OK;
+        const Real eps = ref::format_epsilon<Real>(f);
+        for (const int k : {0, 3, 10, 20, 40, 200, 400, 2000}) {
+          engine::Observed exp_got;
+          exp_got.status = RC_OK;
+          exp_got.outputs = {c.inputs.at(0)};
+          for (Real& x : exp_got.outputs[0]) x = engine::round_to(f, x);
+          Real& x = exp_got.outputs[0][3];
+          x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+          const auto fv = engine::fast_round_trip_verdicts(*fc, c, log_got, exp_got);
+          if (!fv) continue;
+          ++decided;
+          const ref::Verdict v = engine::judge_round_trip(tc, c, log_got, exp_got, f).verdict;
+          if ((fv->worst == ref::Verdict::pass && v != ref::Verdict::pass) ||
+              (fv->worst != ref::Verdict::fail && v == ref::Verdict::fail)) {
+            ++wrong;
+            if (first.empty())
+              first = "EXP-2 [" + c.label + "] " + std::to_string(k) + " eps off: fast worst " +
+                      std::to_string(static_cast<int>(fv->worst)) + ", MPFR " + std::to_string(static_cast<int>(v));
+          }
+        }
+      }
+    }
+  }
+  return wrong;
+}
+
+TEST(FastOracle, RoundTripVerdictsAgreeWithMpfr) {
+  RC_CLAUSE("EXP-2");
+  std::size_t decided = 0;
+  std::string first;
+  EXPECT_EQ(round_trip_disagreements(decided, first), 0u) << first;
+  EXPECT_GT(decided, 0u) << "the fast level decided no round trip";
+  std::printf("EXP-2 round trip: %zu observations decided at the fast level\n", decided);
+}
+
+TEST(FastOracle, AWrongRoundTripDistanceIsCaught) {
+  RC_CLAUSE("EXP-2");
+  engine::set_fast_oracle_mutation(engine::FastOracleMutation::wrong_term);  // halves the distance
+  std::size_t decided = 0;
+  std::string first;
+  const std::size_t wrong = round_trip_disagreements(decided, first);
+  engine::set_fast_oracle_mutation(engine::FastOracleMutation::none);
+  EXPECT_GT(wrong, 0u);
+}
+
 }  // namespace

@@ -62,9 +62,9 @@ using FastFn = std::function<FastReference(const BoundedValues& in, std::size_t 
 
 /// The closed-form ops: the same clause templates as abi_ops.cpp's MPFR lambdas. Not here:
 /// from_matrix (an iterative eigenvector), sqrt and dq_to_rotation_translation (engine-side
-/// references), dq_log and dq_exp, and blend_log and rotate_about_axis, whose references take
-/// exact-zero branches (the log of the pivot's own rotor, the PGA sandwich) that a bound cannot
-/// settle: the fast level decided under a quarter of their cases.
+/// references), dq_log and dq_exp, and rotate_about_axis, whose reference takes exact-zero
+/// branches (the PGA sandwich) that a bound cannot settle: the fast level decided under a quarter
+/// of its cases.
 const std::map<std::string, FastFn>& fast_ops() {
   static const std::map<std::string, FastFn> ops = {
       {"normalize", [](const BoundedValues& in, std::size_t) { return one(clause::NORM_1_normalize(quat(in[0]))); }},
@@ -109,6 +109,11 @@ const std::map<std::string, FastFn>& fast_ops() {
        [](const BoundedValues& in, std::size_t k) {
          const auto qs = many<BQuat>(in[0], k, [](const BoundedArray& a, std::size_t i) { return quat(a, i); });
          return one(clause::QLB_1_blend(std::span<const BQuat>(qs), std::span<const Bounded>(in[1])));
+       }},
+      {"blend_log",
+       [](const BoundedValues& in, std::size_t k) {
+         const auto qs = many<BQuat>(in[0], k, [](const BoundedArray& a, std::size_t i) { return quat(a, i); });
+         return one(clause::LOGBLEND_1_blend(std::span<const BQuat>(qs), std::span<const Bounded>(in[1])));
        }},
       {"dq_from_rotation_translation",
        [](const BoundedValues& in, std::size_t) {
@@ -228,22 +233,22 @@ std::optional<FastCase> fast_case(const AbiOp& op, const spec::ToleranceClass& t
                   from_real(ref::format_min_normal<Real>(f)), eps.toLDouble()};
 }
 
-std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& obs,
-                                          const FastReference& want) {
-  // Only a plain numeric judgement is taken from the fast level; a wrong status or a domain error
-  // is MPFR's to judge.
-  if (obs.call_rc != 0 || !obs.fault.empty() || obs.status != RC_OK || want.status != ref::Status::ok)
-    return std::nullopt;
-  BoundedValues got(obs.outputs.size());
-  for (std::size_t a = 0; a < obs.outputs.size(); ++a)
-    for (const Real& x : obs.outputs[a]) {
-      const long double v = x.toLDouble();  // a value of the format: exact
-      if (!std::isfinite(v)) return std::nullopt;
-      got[a].push_back(Bounded(v, 0));
-    }
-  const ref::BoundedScope scope;
-  const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
-  if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
+namespace {
+
+/// Values of the format (an observation or an input) as exact Bounded values; false where one is
+/// not finite.
+bool exact_values(const std::vector<Real>& xs, BoundedArray& out) {
+  out.clear();
+  for (const Real& x : xs) {
+    const long double v = x.toLDouble();  // a value of the format: exact
+    if (!std::isfinite(v)) return false;
+    out.push_back(Bounded(v, 0));
+  }
+  return true;
+}
+
+/// TOL-1's verdicts at the two ends of the interval e +- bound of an error (in absolute terms).
+FastVerdicts verdicts_of_error(const FastCase& fc, const Bounded& e) {
   // The exact error lies in [e - bound, e + bound]; MPFR's err (that error over eps, rounded to
   // double) lies between the roundings of the two ends, and TOL_1_verdict is monotone.
   const long double spread = e.bound() * (1 + 4 * Bounded::kU);
@@ -253,6 +258,62 @@ std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, c
   const double hi_up = std::nextafter(static_cast<double>(hi), INFINITY);
   return FastVerdicts{ref::clause::TOL_1_verdict(std::max(lo_down, 0.0), fc.bars),
                       ref::clause::TOL_1_verdict(hi_up, fc.bars)};
+}
+
+}  // namespace
+
+std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& obs,
+                                          const FastReference& want) {
+  // Only a plain numeric judgement is taken from the fast level; a wrong status or a domain error
+  // is MPFR's to judge.
+  if (obs.call_rc != 0 || !obs.fault.empty() || obs.status != RC_OK || want.status != ref::Status::ok)
+    return std::nullopt;
+  BoundedValues got(obs.outputs.size());
+  for (std::size_t a = 0; a < obs.outputs.size(); ++a)
+    if (!exact_values(obs.outputs[a], got[a])) return std::nullopt;
+  const ref::BoundedScope scope;
+  const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
+  if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
+  return verdicts_of_error(fc, e);
+}
+
+std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const FastCase& fc, const FastReference& r,
+                                                      ref::Format f, const FastReference& want) {
+  if (r.status != ref::Status::ok || want.status != ref::Status::ok) return std::nullopt;
+  constexpr long double u = Bounded::kU;
+  BoundedValues got(r.outputs.size());
+  for (std::size_t a = 0; a < r.outputs.size(); ++a)
+    for (const Bounded& y : r.outputs[a]) {
+      const long double lo = y.value() - y.bound() * (1 + 4 * u), hi = y.value() + y.bound() * (1 + 4 * u);
+      const long double rlo = f == ref::Format::binary32 ? static_cast<long double>(static_cast<float>(lo))
+                                                         : static_cast<long double>(static_cast<double>(lo));
+      const long double rhi = f == ref::Format::binary32 ? static_cast<long double>(static_cast<float>(hi))
+                                                         : static_cast<long double>(static_cast<double>(hi));
+      if (!std::isfinite(rlo) || !std::isfinite(rhi)) return std::nullopt;
+      // [rlo, rhi] as mid +- half: the halvings are exact (long double's range is far wider than
+      // the formats'), the sum and the difference round once each.
+      const long double mid = rlo / 2 + rhi / 2, half = (rhi - rlo) / 2;
+      got[a].push_back(Bounded(mid, half * (1 + 2 * u) + std::fabs(mid) * 2 * u + LDBL_TRUE_MIN));
+    }
+  const ref::BoundedScope scope;
+  const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
+  if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
+  return verdicts_of_error(fc, e);
+}
+
+std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const Case& c, const Observed& log_got,
+                                                     const Observed& exp_got) {
+  // judge_round_trip: METRIC-1 between exp's output and the input q, over eps, against the bars.
+  if (log_got.call_rc != 0 || exp_got.call_rc != 0 || !log_got.fault.empty() || !exp_got.fault.empty() ||
+      log_got.status != RC_OK || exp_got.status != RC_OK)
+    return std::nullopt;
+  BoundedArray got, q;
+  if (!exact_values(exp_got.outputs.at(0), got) || !exact_values(c.inputs.at(0), q)) return std::nullopt;
+  const ref::BoundedScope scope;
+  Bounded e = clause::METRIC_1_rotation_distance(quat(got), quat(q));
+  if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
+  if (g_mutation == FastOracleMutation::wrong_term) e = Bounded(e.value() / 2, e.bound() / 2);  // a lost factor 2
+  return verdicts_of_error(fc, e);
 }
 
 bool may_be_acceptable(const AbiOp& op) {

@@ -66,6 +66,21 @@ struct FastVerdicts {
 std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& got,
                                           const FastReference& want);
 
+/// The verdicts of `r` rounded to the format against `want`, whichever way each component rounds:
+/// each component is replaced by the interval between the roundings of its two ends (rounding is
+/// monotone), and the error is bounded over all of them at once. For results whose bound spans
+/// more rounding points than fast_roundings enumerates. nullopt where r is not OK, a rounding is
+/// not finite, or the error is not bounded.
+std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const FastCase& fc, const FastReference& r,
+                                                      ref::Format f, const FastReference& want);
+
+/// The verdicts of judge_round_trip (EXP-2: exp(log q) = q through the implementation) at the two
+/// ends of an interval that holds the exact distance METRIC-1(exp_got, q): `fc` is
+/// fast_case(log, EXP-2's class, c, f), whose bars are the round trip's. nullopt where a call
+/// failed, a status is not OK or a value is not finite (MPFR's to judge), or the bound is undecided.
+std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const Case& c, const Observed& log_got,
+                                                     const Observed& exp_got);
+
 /// Whether an acceptable convention (ACC-1) that needs no declaration applies to `op` inside its
 /// domain: judge_case_against may then turn a numeric QUALITY_WARNING or FAIL into an ACCEPTABLE
 /// PASS, which only MPFR decides.
