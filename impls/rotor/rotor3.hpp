@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -344,6 +345,37 @@ struct PhiReadout {
   template <class S> static impl::Vec3<S> pure_out(const impl::Vec3<S>& b) { return {-b[0], -b[1], -b[2]}; }
   template <class S> static impl::Vec3<S> pure_in(const impl::Vec3<S>& v) { return {-v[0], -v[1], -v[2]}; }
 };
+
+/// The corrected Method 2 (ERRATUM-2): quaternion -> rotor by the coefficient map Phi (Q2R-1), no
+/// trigonometry on the way in; the conversion of rotor_m2 and rotor_gen.
+struct Method2 : PhiReadout {
+  /// Phi(q/|q|): a normalisation (EDGE-5) and a move of coefficients with sign changes.
+  template <class S>
+  static Rotor3<S> in(const impl::Quat<S>& q) {
+    const impl::Quat<S> n = normalized(q);
+    return {n[3], -n[0], -n[1], -n[2]};
+  }
+  /// Phi(q), exact (COMPOSE-1 and INV-1 keep the scale of their inputs).
+  template <class S>
+  static Rotor3<S> in_scaled(const impl::Quat<S>& q) { return {q[3], -q[0], -q[1], -q[2]}; }
+};
+
+/// What a complete Cl(3,0) rotor implementation on RotorOps claims (rotor_m1, rotor_m2, rotor_gen):
+/// its levels and every clause of them (nullptr-terminated, as impl.hpp's `clauses`).
+inline constexpr std::uint32_t kRotorLevels =
+    RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
+inline constexpr const char* kRotorClauses[] = {
+    // Core
+    "QUAT-2", "AXANG-1", "AXANG-2", "AXANG-3", "AXANG-4", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2",
+    "APPLY-3", "MAT-1", "MAT-2",
+    // Interp
+    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SQRT-1", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
+    // Blend
+    "QLB-1", "LOGBLEND-1",
+    // Skinning (linear blend skinning only)
+    "SKIN-1",
+    // Robust
+    "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9", nullptr};
 
 /// The operations of the ABI (impl.hpp element functions), computed on rotors. Conv provides
 ///   static Rotor3<S> in(const Quat<S>& q);         // unit rotor of q/|q|; q a rotation

@@ -43,30 +43,6 @@ using rotorcert::rotor_gen::Cl3Even;
 using rotorcert::rotor_gen::Cl3Vector;
 namespace gen = rotorcert::rotor_gen;
 
-/// Method 2 (Q2R-1), the conversion of the slow paths; the same as rotor_m2's.
-struct Method2 : rotorcert::rotor::PhiReadout {
-  template <class S>
-  static Rotor3<S> in(const Quat<S>& q) {
-    const Quat<S> n = rotorcert::rotor::normalized(q);
-    return {n[3], -n[0], -n[1], -n[2]};
-  }
-  template <class S>
-  static Rotor3<S> in_scaled(const Quat<S>& q) { return {q[3], -q[0], -q[1], -q[2]}; }
-};
-
-constexpr const char* kClauses[] = {
-    // Core
-    "QUAT-2", "AXANG-1", "AXANG-2", "AXANG-3", "AXANG-4", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2",
-    "APPLY-3", "MAT-1", "MAT-2",
-    // Interp
-    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SQRT-1", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
-    // Blend
-    "QLB-1", "LOGBLEND-1",
-    // Skinning (linear blend skinning only)
-    "SKIN-1",
-    // Robust
-    "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9", nullptr};
-
 constexpr std::size_t kBlock = 64;
 
 // The batch functions are compiled twice, for AVX2 and for the x86-64 baseline (SSE2), and the
@@ -159,17 +135,16 @@ S sign_undecided(S dot, S length_a, S length_b) {
 }
 
 template <class S>
-struct RotorGen : rotorcert::rotor::RotorOps<S, Method2> {
-  using Base = rotorcert::rotor::RotorOps<S, Method2>;
+struct RotorGen : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
+  using Base = rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2>;
   static constexpr const char* name = "rotor_gen";
   static constexpr const char* version = "1";
   static constexpr const char* description =
       "GA rotors, generated: Cl(3,0) kernels generated at build time from the reference algebra's blade "
       "tables (Gaigen/Gaalop style), rotor = Phi(q) = w - x e23 - y e31 - z e12; batched fast paths for "
       "ordinary inputs, the robust Cl(3,0) code otherwise";
-  static constexpr std::uint32_t levels =
-      RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
-  static constexpr const char* const* clauses = kClauses;
+  static constexpr std::uint32_t levels = rotorcert::rotor::kRotorLevels;
+  static constexpr const char* const* clauses = rotorcert::rotor::kRotorClauses;
   using Flag = S;  // a guard's answer (see unusual)
 
   /// NORM-1: R (1 / sqrt(<R ~R>_0)): one division, not four (the reciprocal's rounding adds u/2

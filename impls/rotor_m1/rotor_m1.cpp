@@ -48,28 +48,14 @@ struct Method1 : rotorcert::rotor::PhiReadout {
   }
 };
 
-constexpr const char* kClauses[] = {
-    // Core
-    "QUAT-2", "AXANG-1", "AXANG-2", "AXANG-3", "AXANG-4", "NORM-1", "COMPOSE-1", "INV-1", "APPLY-1", "APPLY-2",
-    "APPLY-3", "MAT-1", "MAT-2",
-    // Interp
-    "LOG-1", "LOG-2", "EXP-1", "EXP-2", "SQRT-1", "SLERP-1", "SLERP-2", "SLERP-3", "SLERP-4", "SLERP-5", "NLERP-1",
-    // Blend
-    "QLB-1", "LOGBLEND-1",
-    // Skinning (linear blend skinning only)
-    "SKIN-1",
-    // Robust
-    "MAT-3", "EDGE-1", "EDGE-2", "EDGE-3", "EDGE-4", "EDGE-5", "EDGE-6", "EDGE-7", "EDGE-8", "EDGE-9", nullptr};
-
 template <class S>
 struct RotorM1 : rotorcert::rotor::RotorOps<S, Method1> {
   static constexpr const char* name = "rotor_m1";
   static constexpr const char* version = "1";
   static constexpr const char* description =
       "GA rotors, paper's Method 1: quaternion -> angle/axis -> exp(-I u theta/2), ops in Cl(3,0)";
-  static constexpr std::uint32_t levels =
-      RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_BLEND | RC_LEVEL_SKINNING | RC_LEVEL_ROBUST;
-  static constexpr const char* const* clauses = kClauses;
+  static constexpr std::uint32_t levels = rotorcert::rotor::kRotorLevels;
+  static constexpr const char* const* clauses = rotorcert::rotor::kRotorClauses;
 };
 
 }  // namespace
