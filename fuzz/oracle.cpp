@@ -313,6 +313,28 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
   return Judge::status_only;
 }
 
+/// The TOL-1 verdicts of a perturbed result `r` rounded to the format, over every way it may round:
+/// the candidates enumerated where there are few (each must give the verdict: the best of the
+/// bests, the worst of the worsts), else the error bounded over all of them at once. nullopt where
+/// an error is not bounded.
+std::optional<engine::FastVerdicts> rounded_verdicts(const AbiOp& op, const engine::FastCase& fc,
+                                                     const engine::FastReference& r, ref::Format f,
+                                                     const engine::FastReference& want) {
+  const auto roundings = engine::fast_roundings(r, f);
+  if (!roundings) return engine::fast_verdicts_of_rounding(op, fc, r, f, want);
+  engine::FastVerdicts all{ref::Verdict::fail, ref::Verdict::pass};
+  for (const engine::Values& outputs : *roundings) {
+    Observed o;
+    o.status = RC_OK;
+    o.outputs = outputs;
+    const auto v = engine::fast_verdicts(op, fc, o, want);
+    if (!v) return std::nullopt;
+    all.best = std::min(all.best, v->best);
+    all.worst = std::max(all.worst, v->worst);
+  }
+  return all;
+}
+
 /// how_to_judge from the fast level (engine/fast_oracle.hpp): the same decisions, each taken only
 /// where the bounds settle it. A perturbation the bounds do not settle is taken at the MPFR level
 /// alone (mpfr_perturbation against `mpfr_want()`, the element's exact reference, computed on first
@@ -340,51 +362,24 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
     const auto r = engine::fast_reference(op, p.inputs, c.k);
-    std::optional<Perturbation> step;
+    Perturbation step;
     if (!r) {
       step = to_mpfr("a perturbed reference is undecided", p, pattern);
     } else if (r->status != want.status) {
       step = Perturbation::status_differs;
     } else if (!numbers) {
       step = Perturbation::agrees;
-    } else if (const auto roundings = engine::fast_roundings(*r, f); !roundings) {
-      // More roundings than are worth enumerating: the error over all of them at once.
-      const auto v = fc ? engine::fast_verdicts_of_rounding(op, *fc, *r, f, want) : std::nullopt;
+    } else {
+      // The perturbed result as rounded to the format, judged against the element's reference
+      // whichever way it rounds: PASS for every rounding, or (where no acceptable convention could
+      // make it an ACCEPTABLE PASS) surely beyond the strict bar for every one.
+      const auto v = fc ? rounded_verdicts(op, *fc, *r, f, want) : std::nullopt;
       if (v && v->worst == ref::Verdict::pass) step = Perturbation::agrees;
       else if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op)) step = Perturbation::beyond_strict_bar;
-      else {
-        if (debug)
-          std::fprintf(stderr, "fast oracle: %s: verdicts over the roundings %s\n", op.name.c_str(),
-                       v ? (std::to_string(static_cast<int>(v->best)) + ".." + std::to_string(static_cast<int>(v->worst))).c_str()
-                         : "not bounded");
-        step = to_mpfr("a perturbed result straddles too many rounding points", p, pattern);
-      }
-    } else {
-      // The perturbed result as rounded to the format (one candidate per way the exact one may
-      // round), judged against the element's reference: PASS for every candidate, or (where no
-      // acceptable convention could make it an ACCEPTABLE PASS) surely beyond the strict bar for
-      // every one.
-      bool all_pass = true, none_pass = !engine::may_be_acceptable(op), bounded = fc.has_value();
-      for (const engine::Values& outputs : *roundings) {
-        if (!bounded) break;
-        Observed o;
-        o.status = RC_OK;
-        o.outputs = outputs;
-        const auto v = engine::fast_verdicts(op, *fc, o, want);
-        if (!v) {
-          bounded = false;
-          break;
-        }
-        all_pass = all_pass && v->worst == ref::Verdict::pass;
-        none_pass = none_pass && v->best != ref::Verdict::pass;
-      }
-      if (!bounded) step = to_mpfr("a perturbed result's error is not bounded", p, pattern);
-      else if (all_pass) step = Perturbation::agrees;
-      else if (none_pass) step = Perturbation::beyond_strict_bar;
-      else step = to_mpfr("a perturbed result sits on the strict bar", p, pattern);
+      else step = to_mpfr(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded", p, pattern);
     }
-    if (*step == Perturbation::status_differs) return Judge::nothing;
-    if (*step == Perturbation::beyond_strict_bar) numbers = false;
+    if (step == Perturbation::status_differs) return Judge::nothing;
+    if (step == Perturbation::beyond_strict_bar) numbers = false;
   }
   if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (!ok || numbers) return Judge::everything;
@@ -645,6 +640,14 @@ int check(const Decoded& d) {
     if (fast[e] && j && !exact[e]) ++stats().fast[op.name];
   }
 
+  // EXP-2's class and, per element, its fast bars: the same for every table that runs the round trip.
+  const std::string rt_name = op.name == "log" ? engine::tolerance_for(s, "EXP-2", "log") : std::string();
+  std::vector<std::optional<engine::FastCase>> round_trip_case(d.n);
+  if (op.name == "log" && mode != OracleMode::mpfr)
+    for (std::size_t e = 0; e < d.n; ++e)
+      if (status[e] == ref::Status::ok && judge[e] != Judge::nothing)
+        round_trip_case[e] = engine::fast_case(op, s.lookup(rt_name), d.cases[e], f);
+
   int tables = 0;
   for (const rc_impl* t : impl::builtin_tables()) {
     if ((t->scalar == RC_SCALAR_FLOAT64) != d.f64 || !eligible(*t, op.name)) continue;
@@ -687,22 +690,20 @@ int check(const Decoded& d) {
           raw[0].insert(raw[0].end(), w, w + word);
         }
       const std::vector<Observed> back = call_raw(*t, exp_op, d.n, 0, raw);
-      const std::string rt_name = engine::tolerance_for(s, "EXP-2", "log");
       const spec::ToleranceClass& rt_tc = s.lookup(rt_name);
       for (std::size_t e = 0; e < d.n; ++e) {
         if (status[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
         // Surely not a FAIL at the fast level: MPFR's distance is not needed (in "both" mode it
         // is computed as well, and a FAIL there is a disagreement).
-        if (mode != OracleMode::mpfr)
-          if (const auto fc = engine::fast_case(op, rt_tc, d.cases[e], f)) {
-            const auto fv = engine::fast_round_trip_verdicts(*fc, d.cases[e], got[e], back[e]);
-            if (fv && fv->worst != ref::Verdict::fail) {
-              if (mode == OracleMode::both &&
-                  engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f).verdict == ref::Verdict::fail)
-                oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
-              continue;
-            }
+        if (const auto& fc = round_trip_case[e]) {
+          const auto fv = engine::fast_round_trip_verdicts(*fc, d.cases[e], got[e], back[e]);
+          if (fv && fv->worst != ref::Verdict::fail) {
+            if (mode == OracleMode::both &&
+                engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f).verdict == ref::Verdict::fail)
+              oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
+            continue;
           }
+        }
         const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f);
         if (v.verdict == ref::Verdict::fail) {
           engine::CaseVerdict shown = v;
