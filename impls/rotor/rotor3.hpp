@@ -27,6 +27,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <type_traits>
 #include <span>
 #include <vector>
 
@@ -246,13 +247,69 @@ Rotor3<S> interpolate(const Rotor3<S>& ra, const Rotor3<S>& rb, S t) {
   return interpolate(ra, rb, t, runtime::hemisphere_sign(a, b) < 0);
 }
 
-/// The rotor of a matrix M: the unit R with R e_c ~R = column c of M's orthogonal polar factor
-/// (the nearest rotation, MAT-3), returned as Phi of the quaternion from Shepperd's largest-
-/// pivot method (MAT-2). det <= 0, zero or non-finite M: nullopt.
-/// The polar factor comes from Higham's scaled Newton iteration X <- (g X + X^-T / g) / 2; a
-/// matrix that is already orthonormal to a few eps skips it.
+namespace matrix_detail {
+
 template <class S>
-std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
+S at(const impl::Mat3<S>& m, int r, int c) { return m[c * 3 + r]; }
+
+/// cof(M) (cof[c*3 + r] = cofactor of (r, c), i.e. det M M^-T) and det M.
+template <class S>
+impl::Mat3<S> cofactors(const impl::Mat3<S>& m, S& det) {
+  impl::Mat3<S> cof;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      cof[c * 3 + r] = at(m, r1, c1) * at(m, r2, c2) - at(m, r1, c2) * at(m, r2, c1);
+    }
+  det = at(m, 0, 0) * cof[0] + at(m, 0, 1) * cof[3] + at(m, 0, 2) * cof[6];
+  return cof;
+}
+
+/// |M|_F, with the largest |entry| divided out so that no square under- or overflows.
+template <class S>
+S frobenius(const impl::Mat3<S>& m) {
+  S big = 0;
+  for (S e : m) big = std::max(big, std::abs(e));
+  if (big == 0) return 0;
+  S s = 0;
+  for (S e : m) s += (e / big) * (e / big);
+  return big * std::sqrt(s);
+}
+
+/// det M > 0, decided on M as given at any spread of scales: each of the six terms of det M is
+/// a product of frexp mantissas times 2^(sum of exponents), and the terms are summed at the
+/// largest exponent. No product under- or overflows, so the computed sign is det M's wherever
+/// |det M| > 8u per(|M|) (MAT-3's band: two roundings per term, five in the sum).
+template <class S>
+bool determinant_is_positive(const impl::Mat3<S>& m) {
+  constexpr int kPermutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  std::array<S, 6> mantissa{};
+  std::array<int, 6> exponent{};
+  int largest = std::numeric_limits<int>::min();
+  for (int p = 0; p < 6; ++p) {
+    S product = p < 3 ? S(1) : S(-1);
+    for (int row = 0; row < 3; ++row) {
+      int e = 0;
+      product *= std::frexp(at(m, row, kPermutations[p][row]), &e);
+      exponent[p] += e;
+    }
+    mantissa[p] = product;
+    if (product != 0) largest = std::max(largest, exponent[p]);
+  }
+  S sum = 0;
+  for (int p = 0; p < 6; ++p)
+    if (mantissa[p] != 0) sum += std::scalbn(mantissa[p], exponent[p] - largest);
+  return sum > 0;
+}
+
+}  // namespace matrix_detail
+
+/// rotor_from_matrix in one format (binary64 for every caller).
+template <class S>
+std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
+  using matrix_detail::at;
+  using matrix_detail::cofactors;
+  using matrix_detail::frobenius;
   if (!all_finite(matrix)) return std::nullopt;
   S big = 0;
   for (S e : matrix) big = std::max(big, std::abs(e));
@@ -260,25 +317,27 @@ std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
   const int ex = scale_exponent(big);
   impl::Mat3<S> x;
   for (int i = 0; i < 9; ++i) x[i] = std::scalbn(matrix[i], -ex);
-  auto at = [](const impl::Mat3<S>& m, int r, int c) { return m[c * 3 + r]; };
-  auto cofactors = [&](const impl::Mat3<S>& m, S& det) {
-    impl::Mat3<S> cof;  // cof[c*3 + r] = cofactor of (r, c)
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-        cof[c * 3 + r] = at(m, r1, c1) * at(m, r2, c2) - at(m, r1, c2) * at(m, r2, c1);
-      }
-    det = at(m, 0, 0) * cof[0] + at(m, 0, 1) * cof[3] + at(m, 0, 2) * cof[6];
-    return cof;
-  };
-  auto frobenius = [](const impl::Mat3<S>& m) {
-    S s = 0;
-    for (S e : m) s += e * e;
-    return std::sqrt(s);
-  };
   S det;
-  cofactors(x, det);
-  if (!(det > 0)) return std::nullopt;
+  impl::Mat3<S> cof = cofactors(x, det);
+  if (!(det >= std::sqrt(std::numeric_limits<S>::min()))) {
+    // Every nonzero entry of M at least 2^(emin/3) in x's scale (read on M: x may have lost
+    // entries to underflow): no product of three underflows, and the cofactor expansion's sign
+    // is det M's outside MAT-3's band (an exactly repeated column gives det = 0 exactly,
+    // EX-MAT-3-f). Otherwise the sign comes from M as given.
+    bool products_normal = true;
+    for (S e : matrix)
+      products_normal = products_normal && (e == 0 || std::ilogb(e) - ex >= std::numeric_limits<S>::min_exponent / 3);
+    if (!(products_normal ? det > 0 : matrix_detail::determinant_is_positive(matrix))) return std::nullopt;
+    // Lift the small singular values (at most twice: the second pass lifts a second tiny one).
+    for (int pass = 0; pass < 2 && !(det >= std::sqrt(std::numeric_limits<S>::min())); ++pass) {
+      const S c = frobenius(cof);
+      // Rank <= 1 at this scale (the rest underflowed when M was scaled): the polar factor is
+      // lost to the format; Shepperd below still returns a unit rotor, as MAT-3's bar asks.
+      if (!(c > 0)) break;
+      for (int i = 0; i < 9; ++i) x[i] += cof[i] / c;
+      cof = cofactors(x, det);
+    }
+  }
   S defect = 0;  // ||X^T X - I||_F
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -288,12 +347,13 @@ std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
     }
   if (std::sqrt(defect) > S(8) * kEps<S>) {
     for (int iteration = 0; iteration < 60; ++iteration) {
-      impl::Mat3<S> inv_t = cofactors(x, det);  // X^-T = cof(X) / det
-      for (S& e : inv_t) e /= det;
-      const S g = std::sqrt(frobenius(inv_t) / frobenius(x));
+      if (iteration > 0) cof = cofactors(x, det);
+      if (!(det > 0)) break;
+      const S r = std::sqrt(frobenius(cof) / frobenius(x)), root_det = std::sqrt(det);
+      const S g = r / root_det, h = S(1) / (r * root_det);  // g, and 1/(g det)
       S change = 0;
       for (int i = 0; i < 9; ++i) {
-        const S next = S(0.5) * (g * x[i] + inv_t[i] / g);
+        const S next = S(0.5) * (g * x[i] + h * cof[i]);
         change += (next - x[i]) * (next - x[i]);
         x[i] = next;
       }
@@ -320,6 +380,39 @@ std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
   if (!is_rotation(q)) return std::nullopt;
   q = normalized(q);
   return Rotor3<S>{q[3], -q[0], -q[1], -q[2]};
+}
+
+/// The rotor of a matrix M: the unit R with R e_c ~R = column c of M's orthogonal polar factor
+/// (the nearest rotation, MAT-3), returned as Phi of the quaternion from Shepperd's largest-
+/// pivot method (MAT-2). det <= 0, zero or non-finite M: nullopt.
+///
+/// The polar factor comes from Higham's scaled Newton iteration X <- (g X + X^-T / g) / 2; a
+/// matrix that is already orthonormal to a few eps skips it. Range (MAT-3 lets det M be any
+/// positive number, so the singular values may spread over the whole exponent range):
+///  - X^-T and g are never formed: with C = cof(X) = det X^-T, g = r / sqrt(det) and
+///    X^-T / g = C / (r sqrt(det)), r = sqrt(|C|_F / |X|_F), all finite for any det > 0;
+///  - a det below sqrt(min normal) at the scale max|x| in [1, 2) is the cheap test for the
+///    rare input that needs more: its sign is that of the cofactor expansion where no product
+///    of three entries underflows, else decided on M as given (determinant_is_positive), and
+///    X becomes
+///    X + C / |C|_F, which has the same U and V as X = U S V^T (cof(X) = U S' V^T with S' the
+///    products of the other two singular values, all > 0 for det > 0) and so the same polar
+///    factor, with its smallest singular value lifted to about 1;
+///  - binary32 input runs in binary64, whose range covers every product of three binary32.
+template <class S>
+std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
+  if constexpr (std::is_same_v<S, float>) {
+    impl::Mat3<double> wide;
+    for (int i = 0; i < 9; ++i) wide[i] = matrix[i];
+    const std::optional<Rotor3<double>> r = rotor_from_matrix(wide);
+    if (!r) return std::nullopt;
+    const impl::Quat<float> q{float(r->e23), float(r->e31), float(r->e12), float(r->s)};
+    if (!is_rotation(q)) return std::nullopt;
+    const impl::Quat<float> n = normalized(q);
+    return Rotor3<float>{n[3], n[0], n[1], n[2]};
+  } else {
+    return rotor_from_matrix_wide(matrix);
+  }
 }
 
 /// MAT-2's sign rule on a quaternion [x, y, z, w]: w > 0, or for w = 0 the first nonzero of
