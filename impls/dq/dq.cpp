@@ -20,6 +20,7 @@
 
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
+#include <rotorcert/runtime/perpendicular_part.hpp>
 #include <rotorcert/impl_table.hpp>
 
 namespace {
@@ -147,12 +148,18 @@ template <class S> Dual<S> safely_scaled(const Dual<S>& s) {
 }
 
 /// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| on the
-/// safely scaled parts.
+/// safely scaled parts; where that subtraction cancels (d mostly parallel to r), the form
+/// without it (runtime/perpendicular_part.hpp).
 template <class S> Dual<S> normalized(const Dual<S>& s) {
   const Dual<S> x = safely_scaled(s);
-  const S n = std::sqrt(dot(x.r, x.r));
+  const S n2 = dot(x.r, x.r), n = std::sqrt(n2);
   const Quat<S> ru = x.r / n;
-  return {ru, (x.d - dot(ru, x.d) * ru) / n};
+  const S along = dot(ru, x.d);
+  const Quat<S> perp = x.d - along * ru;
+  if (!runtime::projection_cancelled<S>(along, {perp.x, perp.y, perp.z, perp.w})) return {ru, perp / n};
+  const std::array<S, 4> p = runtime::perpendicular_times_norm2<S>({x.r.x, x.r.y, x.r.z, x.r.w}, {x.d.x, x.d.y, x.d.z, x.d.w});
+  const S f = S(1) / (n2 * n);
+  return {ru, {f * p[0], f * p[1], f * p[2], f * p[3]}};
 }
 
 /// DQ-1: (q_r, 1/2 t q_r) for a unit q_r. With t pure, t q_r = (-t.v, w t + t x v).

@@ -84,6 +84,7 @@ TEST(Dq, NormaliseMakesRealUnitAndDualOrthogonal) {
   both([](auto tag) {
     using S = decltype(tag);
     rigid_laws::normalise_makes_real_unit_and_dual_orthogonal<S>(ops<S>());
+    rigid_laws::normalise_removes_a_large_parallel_part<S>(ops<S>());
   });
 }
 

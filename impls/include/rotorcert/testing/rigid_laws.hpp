@@ -97,6 +97,30 @@ template <class S> void normalise_makes_real_unit_and_dual_orthogonal(const Ops<
   }
 }
 
+/// DQ-4, EDGE-5: a unit motion whose dual part gained c r (|c| = 2^4 .. 2^40, the dual part then
+/// mostly parallel to the real part: the input of fuzz finding
+/// rigid/regression-dq-sclerp-subnormal-real-part-f64, at ordinary scales). Subtracting the
+/// parallel part cancels; the result must still be orthogonal, to the bar relative to
+/// max(1, |t|) as METRIC-7 measures the translation, and equal DQ-4 of the input as given.
+template <class S> void normalise_removes_a_large_parallel_part(const Ops<S>& ops) {
+  LawRng rng(7);
+  for (int i = 0; i < 200; ++i) {
+    const D<S> u = rng.rigid<S>(ops);
+    const S c = S(std::ldexp(rng.uniform(0.5, 1) * (i % 2 ? 1 : -1), int(rng.uniform(4, 41))));
+    D<S> d = u, n;
+    for (int j = 0; j < 4; ++j) d[4 + j] = u[4 + j] + c * u[j];
+    std::uint8_t st = 9;
+    ops.dq_normalize(1, d.data(), n.data(), &st);
+    ASSERT_EQ(st, RC_OK);
+    const auto want = ref::clause::DQ_4_normalize(rd(d)).value;
+    const auto t = ref::clause::dual_quaternion_translation(want);
+    const Real scale = max(Real(1), norm3(t));
+    const auto r = rd(n);
+    EXPECT_LE((abs(ref::dot(r.real, r.dual)) / scale / eps<S>()).toDouble(), strict("eps16")) << "c = " << c;
+    EXPECT_LE(rigid_err(n, want), strict("eps16")) << "c = " << c;
+  }
+}
+
 /// DQ-5: between two pure translations (non-unit representatives) no rotation appears, the real
 /// part is the identity exactly, and the translation is linear in t, extrapolation included.
 template <class S> void sclerp_of_pure_translation_is_linear_in_t(const Ops<S>& ops) {
