@@ -202,6 +202,16 @@ def op_from_matrix(f, m, k):
            + mf[0][2] * (mf[1][0] * mf[2][1] - mf[1][1] * mf[2][0]))
     need(det > 0)  # det M <= 0 (the zero matrix included): DOMAIN_ERROR (MAT-3, EDGE-6)
     M = [[m["m"][c * 3 + r] for c in range(3)] for r in range(3)]
+    # K's eigen gap is about twice M's two smaller singular values relative to the largest, so a
+    # spread beyond the working precision leaves the eigenvector undetermined. M/|M| + C/|C|
+    # with C = cof(M) = det(M) M^-T has M's singular vectors, hence the same polar factor, and
+    # lifts the smallest singular value to about 1/sqrt(3) of the largest; twice lifts two.
+    for _ in range(2):
+        C = [[M[(r + 1) % 3][(c + 1) % 3] * M[(r + 2) % 3][(c + 2) % 3]
+              - M[(r + 1) % 3][(c + 2) % 3] * M[(r + 2) % 3][(c + 1) % 3] for c in range(3)] for r in range(3)]
+        nm = mpmath.sqrt(sum(x * x for row in M for x in row))
+        nc = mpmath.sqrt(sum(x * x for row in C for x in row))
+        M = [[M[r][c] / nm + C[r][c] / nc for c in range(3)] for r in range(3)]
 
     def form(q):  # trace(R(q)^T M), R homogeneous of degree 2 in q = (w, x, y, z)
         w, x, y, z = q

@@ -275,6 +275,21 @@ RC_GTEST_PROP(Matrix, NearestRotationOfAPerturbedMatrix, ()) {
   RC_ASSERT(s[0][0] > 0 && minor2 > 0 && det > 0);
 }
 
+RC_GTEST_PROP(Matrix, NearestRotationOfColumnsScaledAcrossTheExponentRange, ()) {
+  RC_CLAUSE("MAT-3");
+  // M = R D, D = diag(2^a, 2^b, 2^c) (exact: powers of two), has the polar factor R whatever
+  // the spread of a, b, c; K's eigen gap is then ~2^-(spread), far below 256 bits.
+  const Q q = unit(*quaternion());
+  Mat3<Real> m = MAT_1_to_matrix(q).value;
+  for (int c = 0; c < 3; ++c) {
+    const int e = *rc::gen::inRange(-1000, 1);
+    for (int r = 0; r < 3; ++r) m[c * 3 + r] *= pow(Real(2), e);
+  }
+  const Result<Q> r = MAT_2_from_matrix(m);
+  RC_ASSERT(r.status == Status::ok);
+  RC_ASSERT(std::min(diff(r.value, q), diff(r.value, -q)) <= ref_class_bar());
+}
+
 TEST(Matrix, NonPositiveDeterminantIsADomainError) {
   RC_CLAUSE("MAT-3");
   const Real nan = ScalarTraits<Real>::nan(), inf = Real(1) / Real(0);

@@ -262,6 +262,31 @@ Result<T> APPLY_3_apply_trivector(const Quaternion<T>& q, const T& s) {
 // ---- matrices ---------------------------------------------------------------------------
 
 /// MAT-1: the matrix of the linear map x -> R x ~R, R = Phi(q/|q|): column c is the image
+
+namespace detail {
+
+/// A/|A|_F + cof(A)/|cof(A)|_F for det A > 0 (see MAT_2_from_matrix): the same polar factor.
+/// cof(A)[c*3 + r] is the cofactor of entry (r, c).
+template <class T>
+Mat3<T> lift_small_singular_values(const Mat3<T>& a) {
+  using std::sqrt;
+  const auto at = [&](int r, int c) { return a[c * 3 + r]; };
+  Mat3<T> cof;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      cof[c * 3 + r] = at(r1, c1) * at(r2, c2) - at(r1, c2) * at(r2, c1);
+    }
+  T na(0), nc(0);
+  for (int i = 0; i < 9; ++i) na += a[i] * a[i], nc += cof[i] * cof[i];
+  na = sqrt(na), nc = sqrt(nc);
+  Mat3<T> out;
+  for (int i = 0; i < 9; ++i) out[i] = a[i] / na + cof[i] / nc;
+  return out;
+}
+
+}  // namespace detail
+
 /// of e_c. Column-major: m[c*3 + r].
 template <class T>
 Result<Mat3<T>> MAT_1_to_matrix(const Quaternion<T>& q) {
@@ -281,6 +306,13 @@ Result<Mat3<T>> MAT_1_to_matrix(const Quaternion<T>& q) {
 /// (Bar-Itzhack 2000): for unit q, tr(M^T R(q)) = 3 q^T K q with the symmetric 4x4 K below,
 /// so the nearest rotation is the eigenvector of K's largest eigenvalue. For an exact rotation
 /// matrix that is the quaternion of M itself (eigenvalue 1).
+/// K's two largest eigenvalues differ by about twice the sum of M's two smaller singular
+/// values, relative to the largest: a matrix whose singular values spread beyond the working
+/// precision (MAT-3 allows any det > 0) would leave the eigenvector undetermined. So K is built
+/// from A = M/|M|_F + C/|C|_F, applied twice, with C = cof(M) = det(M) M^-T: with M = U S V^T,
+/// C = U S' V^T (S'_i the product of the other two singular values, > 0 for det > 0), so A has
+/// M's U and V and the same polar factor, and its smallest singular value is lifted to at
+/// least about 1/sqrt(3) of its largest (the second pass lifts a second small one).
 /// Sign: w > 0; if w == 0, the first nonzero of x, y, z positive. det(M) <= 0 or a
 /// non-finite entry: DOMAIN_ERROR.
 template <class T>
@@ -298,13 +330,18 @@ Result<Quaternion<T>> MAT_2_from_matrix(const Mat3<T>& matrix) {
                 m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
                 m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
   if (!(det > 0)) return domain_error<Quaternion<T>>();
+  Mat3<T> a;  // column-major, as M
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a[c * 3 + r] = m(r, c);
+  for (int pass = 0; pass < 2; ++pass) a = detail::lift_small_singular_values(a);
+  const auto at = [&](int r, int c) { return a[c * 3 + r]; };
   // Rows and columns in the order x, y, z, w.
   const T third = T(1) / T(3);
   const std::array<std::array<T, 4>, 4> k = {{
-      {third * (m(0, 0) - m(1, 1) - m(2, 2)), third * (m(1, 0) + m(0, 1)), third * (m(2, 0) + m(0, 2)), third * (m(2, 1) - m(1, 2))},
-      {third * (m(1, 0) + m(0, 1)), third * (m(1, 1) - m(0, 0) - m(2, 2)), third * (m(2, 1) + m(1, 2)), third * (m(0, 2) - m(2, 0))},
-      {third * (m(2, 0) + m(0, 2)), third * (m(2, 1) + m(1, 2)), third * (m(2, 2) - m(0, 0) - m(1, 1)), third * (m(1, 0) - m(0, 1))},
-      {third * (m(2, 1) - m(1, 2)), third * (m(0, 2) - m(2, 0)), third * (m(1, 0) - m(0, 1)), third * (m(0, 0) + m(1, 1) + m(2, 2))},
+      {third * (at(0, 0) - at(1, 1) - at(2, 2)), third * (at(1, 0) + at(0, 1)), third * (at(2, 0) + at(0, 2)), third * (at(2, 1) - at(1, 2))},
+      {third * (at(1, 0) + at(0, 1)), third * (at(1, 1) - at(0, 0) - at(2, 2)), third * (at(2, 1) + at(1, 2)), third * (at(0, 2) - at(2, 0))},
+      {third * (at(2, 0) + at(0, 2)), third * (at(2, 1) + at(1, 2)), third * (at(2, 2) - at(0, 0) - at(1, 1)), third * (at(1, 0) - at(0, 1))},
+      {third * (at(2, 1) - at(1, 2)), third * (at(0, 2) - at(2, 0)), third * (at(1, 0) - at(0, 1)), third * (at(0, 0) + at(1, 1) + at(2, 2))},
   }};
   const detail::Eigen4<T> eig = detail::jacobi_eigen(k);
   int best = 0;
