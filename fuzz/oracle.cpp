@@ -237,22 +237,6 @@ bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case&
   return false;
 }
 
-/// MAT-3: |det M| <= 8u per(|M|), where the format cannot decide the sign of det M (Shewchuk's
-/// bound on a floating-point 3x3 determinant). Either outcome conforms there, so nothing is judged.
-bool numerically_singular(const std::vector<Real>& m, const Real& u) {
-  if (m.size() != 9) return false;
-  for (const Real& x : m)
-    if (!mpfr::isfinite(x)) return false;  // EDGE-7, judged as such
-  auto at = [&](int r, int c) { return m[static_cast<std::size_t>(c * 3 + r)]; };
-  Real det(0), per(0);
-  constexpr int kPermutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-  for (int p = 0; p < 6; ++p) {
-    const Real term = at(0, kPermutations[p][0]) * at(1, kPermutations[p][1]) * at(2, kPermutations[p][2]);
-    det += p < 3 ? term : -term;
-    per += abs(term);
-  }
-  return abs(det) <= Real(8) * u * per;
-}
 
 /// Decides how much of an element is judged: the reference is evaluated on the inputs perturbed
 /// (perturbed() above), its outputs rounded to the format
@@ -297,7 +281,7 @@ Perturbation mpfr_perturbation(const AbiOp& op, const spec::ToleranceClass& tc, 
 Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
                    const engine::ReferenceResult& want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
-  if (op.name == "from_matrix" && numerically_singular(c.inputs.at(0), u)) return Judge::nothing;
+  if (op.name == "from_matrix" && engine::numerically_singular(c.inputs.at(0), f)) return Judge::nothing;
   bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f);
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {

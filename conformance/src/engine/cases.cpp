@@ -525,6 +525,42 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       for (Real& x : c.inputs[0]) x = g.round(x + Real(g.uniform(-size, size)));
       return labelled(c, "perturbed rotation", {"NonOrthogonalMatrix"});
     });
+    // Singular values spread over the format's exponent range: M = U diag(2^a, 2^b, +-2^c) V^T,
+    // U and V random or with components in {-1, 0, 1} (rotations of the cube, which keep the
+    // scales in separate entries). A polar iteration that forms X^-T overflows; a determinant of
+    // the matrix scaled as a whole underflows (fuzz findings conversions/regression-rotor-from-
+    // matrix-spurious-domain-error-*). Only inputs whose det sign the format decides (outside
+    // MAT-3's band |det| <= 8u per(|M|)), so that the status is judged; delta of such an input is
+    // large, so the bar asks a unit rotation and the status, nothing finer.
+    const int top = f32 ? 120 : 1000;
+    auto cube_or_random = [&]() {
+      if (g.integer(0, 1) == 0) return g.unit_quaternion();
+      Quat q{Real(g.integer(-1, 1)), Real(g.integer(-1, 1)), Real(g.integer(-1, 1)), Real(g.integer(-1, 1))};
+      if (q.w == 0 && q.x == 0 && q.y == 0 && q.z == 0) q.w = 1;
+      const Real norm = sqrt(ref::dot(q, q));
+      return Quat{q.w / norm, q.x / norm, q.y / norm, q.z / norm};
+    };
+    repeat([&](int i) {
+      for (;;) {
+        const auto u = ref::clause::MAT_1_to_matrix(cube_or_random()).value;
+        const auto v = ref::clause::MAT_1_to_matrix(cube_or_random()).value;
+        const std::array<int, 3> e{g.integer(-top, top), g.integer(-top, top), g.integer(-top, top)};
+        const bool reflection = i % 4 == 3;
+        Case c = random();
+        for (int r = 0; r < 3; ++r)
+          for (int col = 0; col < 3; ++col) {
+            Real sum(0);
+            for (int k = 0; k < 3; ++k)
+              sum += u[std::size_t(k * 3 + r)] * Real(std::ldexp(k == 2 && reflection ? -1.0 : 1.0, e[std::size_t(k)])) *
+                     v[std::size_t(k * 3 + col)];
+            c.inputs[0][std::size_t(col * 3 + r)] = g.round(sum);
+          }
+        if (numerically_singular(c.inputs[0], g.format())) continue;
+        const std::string what = "singular values 2^" + std::to_string(e[0]) + ", 2^" + std::to_string(e[1]) + ", " +
+                                 (reflection ? "-2^" : "2^") + std::to_string(e[2]);
+        return reflection ? labelled(c, what, {"SpreadSingularValues", "Reflection"}) : labelled(c, what, {"SpreadSingularValues"});
+      }
+    });
   } else if (clause == "AXANG-1" || clause == "AXANG-3" || clause == "AXANG-4" || clause == "SQRT-1") {
     repeat([&](int) { return random(); });
     // Angles above 2 pi - 1 (w < -cos(1/2)): where GLM 0.9.9.8's angle() returns the wrong branch.
@@ -931,6 +967,22 @@ std::string main_clause_of(const std::string& op) {
 Real round_to(ref::Format format, const Real& x) {
   if (format == ref::Format::binary32) return Real(mpfr_get_flt(x.mpfr_srcptr(), MPFR_RNDN));
   return Real(mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN));
+}
+
+bool numerically_singular(const std::vector<Real>& m, ref::Format format) {
+  if (m.size() != 9) return false;
+  for (const Real& x : m)
+    if (!mpfr::isfinite(x)) return false;
+  auto at = [&](int r, int c) { return m[static_cast<std::size_t>(c * 3 + r)]; };
+  Real det(0), per(0);
+  constexpr int kPermutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  for (int p = 0; p < 6; ++p) {
+    const Real term = at(0, kPermutations[p][0]) * at(1, kPermutations[p][1]) * at(2, kPermutations[p][2]);
+    det += p < 3 ? term : -term;
+    per += abs(term);
+  }
+  const Real u = ref::format_epsilon<Real>(format) / Real(2);
+  return abs(det) <= Real(8) * u * per;
 }
 
 std::string robust_clause_of(const AbiOp& op, const Case& c, ref::Format f) {

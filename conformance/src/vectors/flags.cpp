@@ -46,6 +46,7 @@ const std::vector<std::pair<std::string, std::string>>& vocabulary() {
       {"Infinity", "An infinity among the inputs: DOMAIN_ERROR with NaN outputs (EDGE-7, EDGE-9)."},
       {"Reflection", "A matrix with det < 0: no rotation is near it, DOMAIN_ERROR (MAT-3)."},
       {"NonOrthogonalMatrix", "A rotation matrix perturbed by 1e-6..1e-2: the nearest rotation is returned (MAT-3)."},
+      {"SpreadSingularValues", "A matrix U diag(2^a, 2^b, +-2^c) V^T with exponents anywhere in the format: a polar iteration that forms the inverse overflows, a determinant of the matrix scaled as a whole underflows; the status (det sign decidable) and a unit result are judged (MAT-3)."},
       {"DegenerateWeights", "A weight set outside the domain of blending (EDGE-9): see the specific flag."},
       {"NegativeWeight", "A negative weight (EDGE-9)."},
       {"ZeroWeights", "Every weight 0 (EDGE-9)."},

@@ -78,6 +78,12 @@ std::string tolerance_for(const spec::Spec& spec, const std::string& clause, con
 /// x rounded to the nearest value of the format (binary32 or binary64), as an exact Real.
 Real round_to(ref::Format format, const Real& x);
 
+/// MAT-3's band: |det M| <= 8u per(|M|) for the 3x3 column-major M (u the format's unit
+/// roundoff), where the format cannot decide the sign of det M (Shewchuk's bound on a
+/// floating-point 3x3 determinant) and either outcome conforms. False for non-finite entries
+/// (EDGE-7, judged as such) and for anything but 9 entries.
+bool numerically_singular(const std::vector<Real>& m, ref::Format format);
+
 template <class Supported>
 std::vector<Check> checks_for_clause(const spec::Spec& spec, const std::string& clause, ref::Format format,
                                      const CaseOptions& options, Supported supported) {
