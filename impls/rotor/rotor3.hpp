@@ -394,10 +394,9 @@ std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
 ///  - a det below sqrt(min normal) at the scale max|x| in [1, 2) is the cheap test for the
 ///    rare input that needs more: its sign is that of the cofactor expansion where no product
 ///    of three entries underflows, else decided on M as given (determinant_is_positive), and
-///    X becomes
-///    X + C / |C|_F, which has the same U and V as X = U S V^T (cof(X) = U S' V^T with S' the
-///    products of the other two singular values, all > 0 for det > 0) and so the same polar
-///    factor, with its smallest singular value lifted to about 1;
+///    X becomes X + C / |C|_F, which has the same U and V as X = U S V^T (cof(X) = U S' V^T
+///    with S' the products of the other two singular values, all > 0 for det > 0) and so the
+///    same polar factor, with its smallest singular value lifted to about 1;
 ///  - binary32 input runs in binary64, whose range covers every product of three binary32.
 template <class S>
 std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
