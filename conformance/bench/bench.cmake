@@ -18,7 +18,8 @@ add_executable(rotorcert_bench
 target_include_directories(rotorcert_bench PRIVATE ${rotorcert_bench_dir}/..)
 # rotorcert::skinning (render_check/skinning.cmake, defined after this file: resolved at generate
 # time): the render check's PoseJob/SkinJob, which the frame benchmarks' guard compares against.
-target_link_libraries(rotorcert_bench PRIVATE rotorcert::impls rotorcert::skinning benchmark::benchmark glm::glm hwy::hwy)
+target_link_libraries(rotorcert_bench PRIVATE rotorcert::impls rotorcert::skinning benchmark::benchmark glm::glm hwy::hwy
+                                              rotor_gen_kernels_interface)
 target_compile_definitions(rotorcert_bench PRIVATE ROTORCERT_VERSION="${PROJECT_VERSION}"
                                                    ROTORCERT_BUILD_TYPE="${CMAKE_BUILD_TYPE}"
                                                    ROTORCERT_SHARED_DIR="${ROTORCERT_SHARED_DIR}")

@@ -8,11 +8,16 @@
 //   n, k               batch size, influences per element (1 for the other ops)
 //   sets               buffer sets cycled through (1 in cache, more when streaming)
 //   working_set_bytes  bytes of all the sets together
+//   generated_mul, generated_add, generated_div, generated_sqrt
+//                      only for rotor_gen: the arithmetic of the op's fast path as its generator
+//                      counted it (impls/rotor_gen, kAbiOpCounts), so that the report can set the
+//                      algebra's cost beside the time
 // and the label "impl=<table> scalar=<float|double> op=<op> n=<n> k=<k> target=<SIMD target|none>".
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -24,6 +29,11 @@ struct ElementBench {
   std::size_t n = 0, k = 1;
   double flops_per_element = 0, bytes_per_element = 0;
   std::size_t sets = 1, working_set_bytes = 0;
+  /// The generated fast path's operation counts, where the table has them (rotor_gen).
+  struct Generated {
+    double mul = 0, add = 0, div = 0, sqrt = 0;
+  };
+  std::optional<Generated> generated;
 };
 
 inline void report(benchmark::State& state, const ElementBench& b) {
@@ -40,6 +50,12 @@ inline void report(benchmark::State& state, const ElementBench& b) {
   state.counters["k"] = static_cast<double>(b.k);
   state.counters["sets"] = static_cast<double>(b.sets);
   state.counters["working_set_bytes"] = static_cast<double>(b.working_set_bytes);
+  if (b.generated) {
+    state.counters["generated_mul"] = b.generated->mul;
+    state.counters["generated_add"] = b.generated->add;
+    state.counters["generated_div"] = b.generated->div;
+    state.counters["generated_sqrt"] = b.generated->sqrt;
+  }
   state.SetLabel("impl=" + b.impl + " scalar=" + b.scalar + " op=" + b.op + " n=" + std::to_string(b.n) +
                  " k=" + std::to_string(b.k) + " target=" + b.target);
 }

@@ -3,10 +3,12 @@
 // (inputs.hpp) prepared outside the timed loop, cycling over buffer sets when streaming
 // (workspace.hpp), and reports the counters of counters.hpp.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 #include <rotorcert/registry.hpp>
+#include <rotor_gen_kernels.hpp>  // kAbiOpCounts: the generated rotor's arithmetic per op
 
 #include "counters.hpp"
 #include "inputs.hpp"
@@ -95,6 +97,9 @@ void run_op(benchmark::State& state, const rc_impl& table, const Ops& ops, OpId 
   b.bytes_per_element = static_cast<double>(bytes_per_element(op, sizeof(S), k));
   b.sets = sets;
   b.working_set_bytes = sets * layout.size();
+  if (std::string_view(table.name) == "rotor_gen")
+    for (const rotor_gen::OpCount& c : rotor_gen::kAbiOpCounts)
+      if (b.op == c.kernel) b.generated = ElementBench::Generated{double(c.mul), double(c.add), double(c.div), double(c.sqrt)};
   report(state, b);
 }
 

@@ -208,6 +208,42 @@ TEST(SpeedSection, AccuracyJoinsTheCertificateOfTheSameTableAndOp) {
   EXPECT_DOUBLE_EQ(p.at("max_eps").get<double>(), 3.5);
 }
 
+// #18's algebra-versus-implementation table: the generated rotor's counters (as rotorcert_bench
+// writes them for rotor_gen) beside glm_quat's time for the same op, scalar and n = 4096.
+TEST(SpeedSection, OperationCountsOfTheGeneratedRotorStandBesideBothTimes) {
+  RC_CLAUSE("REPORT-2");
+  json b = bench_document();
+  json gen = op_run("rotor_gen", "float", "compose", 4096, 3.0, 28.0, 49.0);
+  gen["generated_mul"] = 24;
+  gen["generated_add"] = 18;
+  gen["generated_div"] = 0;
+  gen["generated_sqrt"] = 0;
+  b["benchmarks"].push_back(gen);
+  b["benchmarks"].push_back(op_run("glm_quat", "float", "compose", 4096, 2.0, 28.0, 49.0));
+  json alone = op_run("rotor_gen", "double", "slerp", 4096, 10.0, 105.0, 105.0);  // no glm_quat row
+  alone["generated_mul"] = 64;
+  alone["generated_add"] = 36;
+  alone["generated_div"] = 4;
+  alone["generated_sqrt"] = 3;
+  b["benchmarks"].push_back(alone);
+  b["benchmarks"].push_back(op_run("rotor_gen", "float", "compose", 64, 5.0, 28.0, 49.0));  // not at 4096
+  const json s = speed_section(b, {}, "bench.json");
+  ASSERT_EQ(s.at("operation_counts").size(), 2u);
+  const json& c = s["operation_counts"][0]["scalar"] == "float" ? s["operation_counts"][0] : s["operation_counts"][1];
+  const json& d = s["operation_counts"][0]["scalar"] == "float" ? s["operation_counts"][1] : s["operation_counts"][0];
+  EXPECT_EQ(c.at("op"), "compose");
+  EXPECT_DOUBLE_EQ(c.at("generated_total").get<double>(), 42.0);  // 24 mul + 18 add
+  EXPECT_DOUBLE_EQ(c.at("formula_flops").get<double>(), 28.0);
+  EXPECT_DOUBLE_EQ(c.at("vs_glm_quat").get<double>(), 1.5);  // 3 ns against 2 ns
+  EXPECT_DOUBLE_EQ(d.at("generated_total").get<double>(), 107.0);
+  EXPECT_TRUE(d.at("vs_glm_quat").is_null());
+  // Tables without the counters (every one but rotor_gen) have none.
+  EXPECT_TRUE(find_op(s, "slerp", 65536)->at("generated_ops").is_null());
+  json report = {{"sections", {{"speed", s}}}};
+  EXPECT_NE(rotorcert::report::render_html(report).find("24 mul + 18 add (42)"), std::string::npos);
+  EXPECT_NE(rotorcert::report::render_markdown(report).find("| compose | float | 24 mul + 18 add (42) | 28 |"), std::string::npos);
+}
+
 TEST(SpeedSection, NotABenchmarkDocumentIsAnError) {
   RC_CLAUSE("REPORT-2");
   EXPECT_THROW(speed_section(json::object(), {}, "x.json"), std::runtime_error);

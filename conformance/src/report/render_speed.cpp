@@ -151,6 +151,22 @@ void scatter(std::ostream& out, const std::string& op, const std::vector<const j
 
 const char* kSizes[] = {"1", "64", "4096", "65536"};
 
+/// "24 mul + 18 add + 1 div + 1 sqrt" of a generated_ops object (the nonzero terms).
+std::string arithmetic_text(const json& g) {
+  std::string out;
+  for (const char* k : {"mul", "add", "div", "sqrt"}) {
+    const double v = num(g, k, 0);
+    if (v == 0) continue;
+    out += (out.empty() ? "" : " + ") + fmt3(v) + " " + k;
+  }
+  return out.empty() ? "0" : out;
+}
+
+const char* kCountsIntro =
+    "The generated rotor's arithmetic per element (its generator's count of the fast path, guards included) beside "
+    "the quaternion formula's nominal flops (an FMA counts 2, a transcendental 20) and the two tables' times at 4096. "
+    "Where the counts match and the times do not, the gap is the implementation's, not the algebra's.";
+
 }  // namespace
 
 void render_speed_html(std::ostream& out, const json& s) {
@@ -273,6 +289,20 @@ void render_speed_html(std::ostream& out, const json& s) {
     }
   out << "</tbody>\n</table>\n</div>\n";
 
+  // Algebra or implementation.
+  if (!arr(s, "operation_counts").empty()) {
+    out << "<h3>Algebra or implementation: operation counts beside the times</h3>\n<p class=\"muted\">" << esc(kCountsIntro)
+        << "</p>\n<table class=\"speed-counts\">\n<thead><tr><th>Op</th><th>Scalar</th><th>Generated rotor: operations</th>"
+           "<th>Formula flops</th><th>rotor_gen ns/el</th><th>glm_quat ns/el</th><th>rotor_gen / glm_quat</th></tr></thead>\n"
+           "<tbody>\n";
+    for (const json& c : arr(s, "operation_counts"))
+      out << "<tr><td>" << esc(str(c, "op")) << "</td><td>" << esc(str(c, "scalar")) << "</td><td>"
+          << esc(arithmetic_text(obj_at(c, "generated"))) << " (" << num_text(c, "generated_total") << ")</td><td>"
+          << num_text(c, "formula_flops") << "</td><td>" << num_text(c, "ns_per_element") << "</td><td>"
+          << num_text(c, "glm_quat_ns_per_element") << "</td><td>" << ratio_text(num(c, "vs_glm_quat")) << "</td></tr>\n";
+    out << "</tbody>\n</table>\n";
+  }
+
   // Accuracy versus speed.
   std::map<std::string, std::vector<const json*>> per_op;
   for (const json& p : arr(s, "accuracy_vs_speed")) per_op[str(p, "op")].push_back(&p);
@@ -343,6 +373,17 @@ void render_speed_markdown(std::ostream& out, const json& s) {
       row(out, cells);
     }
   out << "\n";
+  if (!arr(s, "operation_counts").empty()) {
+    out << cell(kCountsIntro) << "\n\n";
+    header(out, {"Op", "Scalar", "Generated rotor: operations", "Formula flops", "rotor_gen ns/el", "glm_quat ns/el",
+                 "rotor_gen / glm_quat"});
+    for (const json& c : arr(s, "operation_counts"))
+      row(out, {cell(str(c, "op")), cell(str(c, "scalar")),
+                cell(arithmetic_text(obj_at(c, "generated")) + " (" + num_text(c, "generated_total") + ")"),
+                num_text(c, "formula_flops"), num_text(c, "ns_per_element"), num_text(c, "glm_quat_ns_per_element"),
+                ratio_text(num(c, "vs_glm_quat"))});
+    out << "\n";
+  }
 }
 
 }  // namespace rotorcert::report::detail

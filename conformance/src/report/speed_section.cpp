@@ -171,9 +171,43 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
       const auto it = baseline_ns.find(std::string(base) + "/" + f["scalar"] + "/" + f["n"]);
       row[std::string("vs_") + base] = it == baseline_ns.end() ? json(nullptr) : json(it->second / *ns);
     }
+    const auto g_mul = number(b, "generated_mul"), g_add = number(b, "generated_add"),
+               g_div = number(b, "generated_div"), g_sqrt = number(b, "generated_sqrt");
+    row["generated_ops"] = g_mul && g_add && g_div && g_sqrt
+                               ? json{{"mul", *g_mul}, {"add", *g_add}, {"div", *g_div}, {"sqrt", *g_sqrt}}
+                               : json(nullptr);
     ops.push_back(row);
   }
   section["ops"] = ops;
+
+  // Algebra or implementation: the generated rotor's arithmetic per op (its generator's count of
+  // the fast path) beside the quaternion formula's nominal flops and both tables' times at 4096.
+  // Equal arithmetic with unequal times puts a gap in the implementation, not the algebra.
+  json counts = json::array();
+  std::map<std::string, const json*> at4096;  // "impl/scalar/op"
+  for (const json& r : ops)
+    if (r.at("n") == 4096)
+      at4096[r.at("impl").get<std::string>() + "/" + r.at("scalar").get<std::string>() + "/" + r.at("op").get<std::string>()] = &r;
+  for (const auto& [key, r] : at4096) {
+    if (r->at("impl") != "rotor_gen" || r->at("generated_ops").is_null()) continue;
+    const json& g = r->at("generated_ops");
+    const auto glm = at4096.find("glm_quat/" + r->at("scalar").get<std::string>() + "/" + r->at("op").get<std::string>());
+    const double ns = r->at("ns_per_element").get<double>();
+    json c = {{"op", r->at("op")}, {"scalar", r->at("scalar")}, {"n", 4096}, {"generated", g},
+              {"generated_total", g.at("mul").get<double>() + g.at("add").get<double>() + g.at("div").get<double>() +
+                                      g.at("sqrt").get<double>()},
+              {"formula_flops", r->at("flops_per_element")}, {"ns_per_element", ns}};
+    if (glm != at4096.end()) {
+      const double glm_ns = glm->second->at("ns_per_element").get<double>();
+      c["glm_quat_ns_per_element"] = glm_ns;
+      c["vs_glm_quat"] = ns / glm_ns;
+    } else {
+      c["glm_quat_ns_per_element"] = nullptr;
+      c["vs_glm_quat"] = nullptr;
+    }
+    counts.push_back(c);
+  }
+  section["operation_counts"] = counts;
 
   // Targets.
   json targets = json::array();
