@@ -1,4 +1,4 @@
-# The render check as one call and the `rotorcert render` command (issue #6; spec VIS-1..3):
+# The render check as one call and the `rotorcert render` command (spec VIS-1..3):
 # library rotorcert::render_check (include/rotorcert/render/render_check.hpp) on top of the
 # skinning and renderer libraries, and its tests (tests/test_vis_*.cpp, targets
 # render_check_test_vis_* created by CMakeLists.txt's glob).

@@ -1,4 +1,4 @@
-# The off-screen renderer and the image comparison of the render check (issue #6): OSMesa
+# The off-screen renderer and the image comparison of the render check (VIS-2): OSMesa
 # (Debian libosmesa6-dev; Mesa's software OpenGL on llvmpipe, so frames need no GPU or display)
 # and stb_image_write for PNG output (Debian libstb-dev, a header whose implementation is
 # compiled once, in src/stb_image_write_impl.cpp).

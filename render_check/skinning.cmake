@@ -1,5 +1,5 @@
 # Posing and skinning the characters with each implementation and with the MPFR reference, and
-# the vertex error between them (issue #6): library rotorcert::skinning and its tests
+# the vertex error between them (VIS-1): library rotorcert::skinning and its tests
 # (tests/test_skin_*.cpp, targets render_check_test_skin_* created by CMakeLists.txt's glob).
 add_library(rotorcert_skinning STATIC
   src/method.cpp

@@ -93,7 +93,7 @@ def main(argv):
         worst = d.get("worst") or {}
         if not worst.get("input") or "error_eps" not in worst:
             failures.append("defect %s %s states no worst input or error" % (d["scalar"], d["clause"]))
-        # Issue #16: every defect has a reproducer in the library's own language (REPORT-3); the
+        # REPORT-3: every defect has a reproducer in the library's own language; the
         # ctest reproducer_<adapter>_<file> runs it against the unmodified library.
         rep = d.get("reproducer")
         root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

@@ -1,4 +1,4 @@
-// The two-level oracle's fast level (issue #21 item 1, engine/fast_oracle.hpp): on every case the
+// The two-level oracle's fast level (engine/fast_oracle.hpp; fuzz/README.md, "The fast oracle"): on every case the
 // suite generates for every clause (random, edge and worked-example inputs, both formats), the
 // exact 256-bit reference lies within every bound of the fast reference, the statuses agree, and
 // every verdict the fuzz oracle takes from the fast level (surely PASS, surely not FAIL, surely

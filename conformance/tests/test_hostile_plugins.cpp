@@ -1,4 +1,4 @@
-// Hostile plugins (RESULT-3, issue #21 item 4): plugins that misbehave the ways real ones do, each
+// Hostile plugins (RESULT-3): plugins that misbehave the ways real ones do, each
 // certified with `rotorcert certify` as a user runs it. Each must be reported with a defined result,
 // the run must go on to the other clauses, and nothing a plugin does may write the certificate or
 // the report (the parent process owns them; the child's channel is untrusted input). The plugins

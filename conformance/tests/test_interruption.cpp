@@ -1,4 +1,4 @@
-// Interruption and --resume (RESULT-4, issue #21 item 5): SIGTERM or Ctrl-C during `certify` leaves
+// Interruption and --resume (RESULT-4): SIGTERM or Ctrl-C during `certify` leaves
 // the previous complete report as it was (byte for byte), keeps every clause finished so far in the
 // journal, and `--resume` finishes the run without redoing them, giving the report an
 // uninterrupted run gives. The runs certify rotor_m2 (both tables, about 60 clauses, a few seconds).

@@ -208,7 +208,7 @@ TEST(SpeedSection, AccuracyJoinsTheCertificateOfTheSameTableAndOp) {
   EXPECT_DOUBLE_EQ(p.at("max_eps").get<double>(), 3.5);
 }
 
-// #18's algebra-versus-implementation table: the generated rotor's counters (as rotorcert_bench
+// REPORT-2's operation counts: the generated rotor's counters (as rotorcert_bench
 // writes them for rotor_gen) beside glm_quat's time for the same op, scalar and n = 4096.
 TEST(SpeedSection, OperationCountsOfTheGeneratedRotorStandBesideBothTimes) {
   RC_CLAUSE("REPORT-2");

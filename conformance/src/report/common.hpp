@@ -66,8 +66,8 @@ std::string histogram_bin_label(const json& histogram, std::size_t i);
 /// Non-empty bins as "≤0.5:120 ≤1:30 >1024:2"; "no finite errors" when every bin is empty.
 std::string histogram_text(const json& histogram);
 
-/// The verdict notes of one clause result, one line each, for both renderers (REPORT-1, issue
-/// #16 item 5): inputs with a wrong status, outputs accepted under a convention (ACC-1), inputs not
+/// The verdict notes of one clause result, one line each, for both renderers (REPORT-1):
+/// inputs with a wrong status, outputs accepted under a convention (ACC-1), inputs not
 /// judged under a declared precondition (DECL-1), per-input convention diagnoses (CONV-1), and the
 /// worst-case search. Plain text; the renderers escape it.
 std::vector<std::string> verdict_notes(const json& clause_result);

@@ -14,7 +14,7 @@
 namespace rotorcert::report::detail {
 
 namespace {
-/// The standalone reproducer of a defect (issue #16): its file, language and the command that runs
+/// The standalone reproducer of a defect (REPORT-3): its file, language and the command that runs
 /// it against the unmodified library.
 std::string reproducer_html(const json& defect) {
   if (!defect.contains("reproducer") || !defect["reproducer"].is_object())

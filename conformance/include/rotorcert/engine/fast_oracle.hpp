@@ -1,4 +1,4 @@
-// The fast level of the two-level oracle (issue #21; fuzz/README.md, "The fast oracle").
+// The fast level of the two-level oracle (fuzz/README.md, "The fast oracle").
 //
 // The reference's clause templates are evaluated in ref::Bounded (reference/bounded.hpp): an x87
 // extended value with a rigorous bound on its distance from the exact result. A judgement is

@@ -1,4 +1,4 @@
-// The render check as one call (issue #6; spec VIS-1, VIS-2, VIS-3): for each scene, clip and
+// The render check as one call (spec VIS-1, VIS-2, VIS-3): for each scene, clip and
 // frame, every method poses and skins the character (pose_job.hpp, skin_job.hpp), the MPFR
 // reference does the same for each technique (reference_pose.hpp), and both are drawn by one
 // OsmesaRenderer with one camera. The result is a JSON object (layout below) with a verdict per
