@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include <rotorcert/runtime/ordinary_range.hpp>
 #include <rotorcert/runtime/perpendicular_part.hpp>
@@ -103,12 +104,23 @@ template <class S> Motor<S> rotor(S x, S y, S z, S w) { return {w, -x, -y, -z, 0
 
 // ---- normalisation ----------------------------------------------------------------------------------
 
+/// The normalised ideal part (c', p') where (c, -p) is mostly parallel to (b, s): the form without
+/// the subtraction (runtime/perpendicular_part.hpp), as DQ-4 in dq.cpp; out of line (rare) so that
+/// normalized's common path stays small enough to inline.
+template <class S>
+[[gnu::noinline, gnu::cold]] std::pair<V3<S>, S> ideal_part_without_subtraction(S s, const V3<S>& b, const V3<S>& c, S p,
+                                                                               S n) {
+  const std::array<S, 4> d = runtime::perpendicular_times_norm2<S>({b[0], b[1], b[2], s}, {c[0], c[1], c[2], -p});
+  const S f = S(1) / (n * n * n);
+  return {V3<S>{f * d[0], f * d[1], f * d[2]}, -f * d[3]};
+}
+
 /// M (M ~M)^(-1/2). With n^2 = s^2 + |b|^2 and M ~M = n^2 + 2 (s p - b.c) e0123 this is
 ///   (s, b, c, p) -> (s, b, c - k b, p + k s) / n,   k = (b.c - s p) / n^2,
 /// i.e. DQ-4 carried over by MOTOR-1. A common power-of-two scale (exact) comes first so that
 /// n^2 neither overflows nor underflows, unless the rotor part's n^2 and the ideal part's squares
 /// are ordinary (runtime/ordinary_range.hpp: then the scale would change nothing but underflows
-/// far below the unit roundoff). Where the subtraction of k b cancels, the ideal part comes from
+/// far below the unit roundoff). Where the subtraction of k b would cancel, the ideal part comes from
 /// runtime/perpendicular_part.hpp instead. Precondition: finite, rotor part nonzero.
 template <class S> Motor<S> normalized(const Motor<S>& m) {
   using std::abs;
@@ -125,14 +137,12 @@ template <class S> Motor<S> normalized(const Motor<S>& m) {
   const S su = s / n;
   const V3<S> bu{b[0] / n, b[1] / n, b[2] / n};
   const S k = dot3(bu, c) - su * p;
-  const V3<S> c_perp{c[0] - k * bu[0], c[1] - k * bu[1], c[2] - k * bu[2]};
-  const S p_perp = p + k * su;
-  if (!runtime::projection_cancelled<S>(k, {c_perp[0], c_perp[1], c_perp[2], p_perp}))
-    return motor(su, bu, V3<S>{c_perp[0] / n, c_perp[1] / n, c_perp[2] / n}, p_perp / n);
-  // (c, -p) mostly parallel to (b, s): the form without the subtraction, as DQ-4 in dq.cpp.
-  const std::array<S, 4> d = runtime::perpendicular_times_norm2<S>({b[0], b[1], b[2], s}, {c[0], c[1], c[2], -p});
-  const S f = S(1) / (n * n * n);
-  return motor(su, bu, V3<S>{f * d[0], f * d[1], f * d[2]}, -f * d[3]);
+  if (runtime::projection_cancels(k, ordinary ? i2 : dot3(c, c) + p * p)) [[unlikely]] {
+    const auto [c_unit, p_unit] = ideal_part_without_subtraction(s, b, c, p, n);
+    return motor(su, bu, c_unit, p_unit);
+  }
+  return motor(su, bu, V3<S>{(c[0] - k * bu[0]) / n, (c[1] - k * bu[1]) / n, (c[2] - k * bu[2]) / n},
+               (p + k * su) / n);
 }
 
 // ---- action on points -----------------------------------------------------------------------------

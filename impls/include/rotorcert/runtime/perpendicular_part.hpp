@@ -10,12 +10,13 @@
 // Component i of |r|^2 (d - (r'.d) r') is sum_{j != i} r_j (r_j d_i - r_i d_j): no parallel part
 // is ever formed, and each 2x2 term with an fma is accurate to 1.5 ulp (Kahan), so the
 // perpendicular part comes out to a few ulp of itself. It costs about 3 times the subtraction,
-// so the callers use it only where the cheap test below says the subtraction cancelled.
+// so the callers use it only where the cheap test below says the subtraction would cancel.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace rotorcert::runtime {
 
@@ -38,14 +39,14 @@ std::array<S, 4> perpendicular_times_norm2(const std::array<S, 4>& r, const std:
   return out;
 }
 
-/// The cheap test after d - along r' was computed: |along| above 4 times the largest component
-/// of the difference means the subtraction lost more than two bits of the result, whose parallel
-/// part then errs by more than DQ-4's bars allow relative to |d'|.
+/// The cheap test, asked before the subtraction: with r' unit, |d|^2 = along^2 + |d'|^2, so
+/// along^2 > 15/16 |d|^2 means |d'| < |d|/4: the subtraction d - along r' would lose more than two
+/// bits of d', whose parallel part then errs by more than DQ-4's bars allow relative to |d'|.
+/// |d|^2 comes from the input alone, so it is computed beside the normalisation's sqrt and
+/// division rather than after them. A |d|^2 that overflowed (or is not finite) answers yes.
 template <class S>
-bool projection_cancelled(S along, const std::array<S, 4>& difference) {
-  using std::abs;
-  const S largest = std::max({abs(difference[0]), abs(difference[1]), abs(difference[2]), abs(difference[3])});
-  return abs(along) > S(4) * largest;
+bool projection_cancels(S along, S d_norm2) {
+  return !(d_norm2 <= std::numeric_limits<S>::max()) || along * along > S(0.9375) * d_norm2;
 }
 
 }  // namespace rotorcert::runtime
