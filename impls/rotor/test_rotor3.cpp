@@ -10,6 +10,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <rotorcert/reference/cl3.hpp>
+#include <rotorcert/reference/mat3_domain.hpp>
 #include <rotorcert/testing/clause.hpp>
 #include <rotorcert/testing/generators.hpp>
 #include <rotorcert/testing/tolerance.hpp>
@@ -234,28 +235,13 @@ void from_matrix_over_the_exponent_range() {
       m[c * 3 + r] = round_to<S>(sum);
       mr[c * 3 + r] = Real(m[c * 3 + r]);
     }
-  auto at = [&](int r, int c) { return mr[c * 3 + r]; };
-  constexpr int kPermutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-  Real det(0), per(0);
-  for (int p = 0; p < 6; ++p) {
-    const Real term = at(0, kPermutations[p][0]) * at(1, kPermutations[p][1]) * at(2, kPermutations[p][2]);
-    det += p < 3 ? term : -term;
-    per += abs(term);
-  }
-  const Real band = Real(8) * Real(eps<S>() / 2) * per;
-  RC_PRE(abs(det) > band);  // inside the band either outcome conforms (MAT-3)
+  // Inside the band either outcome conforms (MAT-3).
+  RC_PRE(!clause::MAT_3_numerically_singular(mr, Real(eps<S>() / 2)));
   const std::optional<Rotor3<S>> got = rotorcert::rotor::rotor_from_matrix(m);
   const auto want = clause::MAT_2_from_matrix(mr);
   RC_ASSERT(got.has_value() == (want.status == rr::Status::ok));
   if (!got) return;
-  Real delta(0);  // ||M^T M - I||_F of the input
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      Real g(i == j ? -1 : 0);
-      for (int k = 0; k < 3; ++k) g += at(k, i) * at(k, j);
-      delta += g * g;
-    }
-  delta = sqrt(delta);
+  const Real delta = clause::MAT_3_orthogonality_defect(mr);
   const double strict = (Real(16) + Real(2) * delta / Real(eps<S>())).toDouble();
   RC_ASSERT(rotation_error(phi_inv(*got), want.value) <= strict);
 }

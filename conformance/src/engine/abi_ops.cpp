@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <span>
 
+#include <rotorcert/reference/mat3_domain.hpp>
 #include <rotorcert/reference/metrics.hpp>
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
@@ -394,15 +395,9 @@ bool is_axis_input(const AbiOp& op, const Array& a) {
 }
 
 Real orthogonality_defect(const std::vector<Real>& m) {
-  Real delta(0);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      Real s(0);
-      for (int r = 0; r < 3; ++r) s += m[i * 3 + r] * m[j * 3 + r];
-      const Real d = s - Real(i == j ? 1 : 0);
-      delta += d * d;
-    }
-  return sqrt(delta);
+  ref::Mat3<Real> a;
+  std::copy(m.begin(), m.begin() + 9, a.begin());
+  return ref::clause::MAT_3_orthogonality_defect(a);
 }
 
 bool supports(const rc_impl& table, const std::string& op) {

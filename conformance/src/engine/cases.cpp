@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 
+#include <rotorcert/reference/mat3_domain.hpp>
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
@@ -973,16 +974,9 @@ bool numerically_singular(const std::vector<Real>& m, ref::Format format) {
   if (m.size() != 9) return false;
   for (const Real& x : m)
     if (!mpfr::isfinite(x)) return false;
-  auto at = [&](int r, int c) { return m[static_cast<std::size_t>(c * 3 + r)]; };
-  Real det(0), per(0);
-  constexpr int kPermutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-  for (int p = 0; p < 6; ++p) {
-    const Real term = at(0, kPermutations[p][0]) * at(1, kPermutations[p][1]) * at(2, kPermutations[p][2]);
-    det += p < 3 ? term : -term;
-    per += abs(term);
-  }
-  const Real u = ref::format_epsilon<Real>(format) / Real(2);
-  return abs(det) <= Real(8) * u * per;
+  ref::Mat3<Real> a;
+  std::copy(m.begin(), m.end(), a.begin());
+  return ref::clause::MAT_3_numerically_singular(a, ref::format_epsilon<Real>(format) / Real(2));
 }
 
 std::string robust_clause_of(const AbiOp& op, const Case& c, ref::Format f) {
