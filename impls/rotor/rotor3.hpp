@@ -319,7 +319,8 @@ std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
   for (int i = 0; i < 9; ++i) x[i] = std::scalbn(matrix[i], -ex);
   S det;
   impl::Mat3<S> cof = cofactors(x, det);
-  if (!(det >= std::sqrt(std::numeric_limits<S>::min()))) {
+  const S small_det = std::sqrt(std::numeric_limits<S>::min());  // the cheap test's threshold
+  if (!(det >= small_det)) {
     // Every nonzero entry of M at least 2^(emin/3) in x's scale (read on M: x may have lost
     // entries to underflow): no product of three underflows, and the cofactor expansion's sign
     // is det M's outside MAT-3's band (an exactly repeated column gives det = 0 exactly,
@@ -329,7 +330,7 @@ std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
       products_normal = products_normal && (e == 0 || std::ilogb(e) - ex >= std::numeric_limits<S>::min_exponent / 3);
     if (!(products_normal ? det > 0 : matrix_detail::determinant_is_positive(matrix))) return std::nullopt;
     // Lift the small singular values (at most twice: the second pass lifts a second tiny one).
-    for (int pass = 0; pass < 2 && !(det >= std::sqrt(std::numeric_limits<S>::min())); ++pass) {
+    for (int pass = 0; pass < 2 && !(det >= small_det); ++pass) {
       const S c = frobenius(cof);
       // Rank <= 1 at this scale (the rest underflowed when M was scaled): the polar factor is
       // lost to the format; Shepperd below still returns a unit rotor, as MAT-3's bar asks.

@@ -183,21 +183,22 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
   // Algebra or implementation: the generated rotor's arithmetic per op (its generator's count of
   // the fast path) beside the quaternion formula's nominal flops and both tables' times at 4096.
   // Equal arithmetic with unequal times puts a gap in the implementation, not the algebra.
-  json counts = json::array();
-  std::map<std::string, const json*> at4096;  // "impl/scalar/op"
+  // The op rows at 4096, by "impl/scalar/op" (also the accuracy-versus-speed join below).
+  std::map<std::string, const json*> op4096;
   for (const json& r : ops)
     if (r.at("n") == 4096)
-      at4096[r.at("impl").get<std::string>() + "/" + r.at("scalar").get<std::string>() + "/" + r.at("op").get<std::string>()] = &r;
-  for (const auto& [key, r] : at4096) {
+      op4096[r.at("impl").get<std::string>() + "/" + r.at("scalar").get<std::string>() + "/" + r.at("op").get<std::string>()] = &r;
+  json counts = json::array();
+  for (const auto& [key, r] : op4096) {
     if (r->at("impl") != "rotor_gen" || r->at("generated_ops").is_null()) continue;
     const json& g = r->at("generated_ops");
-    const auto glm = at4096.find("glm_quat/" + r->at("scalar").get<std::string>() + "/" + r->at("op").get<std::string>());
+    const auto glm = op4096.find("glm_quat/" + r->at("scalar").get<std::string>() + "/" + r->at("op").get<std::string>());
     const double ns = r->at("ns_per_element").get<double>();
     json c = {{"op", r->at("op")}, {"scalar", r->at("scalar")}, {"n", 4096}, {"generated", g},
               {"generated_total", g.at("mul").get<double>() + g.at("add").get<double>() + g.at("div").get<double>() +
                                       g.at("sqrt").get<double>()},
               {"formula_flops", r->at("flops_per_element")}, {"ns_per_element", ns}};
-    if (glm != at4096.end()) {
+    if (glm != op4096.end()) {
       const double glm_ns = glm->second->at("ns_per_element").get<double>();
       c["glm_quat_ns_per_element"] = glm_ns;
       c["vs_glm_quat"] = ns / glm_ns;
@@ -298,10 +299,6 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
 
   // Accuracy versus speed: the certificate's accuracy of each op beside its ns/element at 4096.
   json avs = json::array();
-  std::map<std::string, const json*> op4096;
-  for (const json& r : ops)
-    if (r.at("n") == 4096) op4096[r.at("impl").get<std::string>() + "/" + r.at("scalar").get<std::string>() + "/" +
-                                 r.at("op").get<std::string>()] = &r;
   for (const json& c : certificates) {
     if (!c.is_object() || !c.contains("accuracy") || !c["accuracy"].is_array()) continue;
     for (const json& a : c["accuracy"]) {
