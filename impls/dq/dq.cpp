@@ -147,17 +147,17 @@ template <class S> Dual<S> safely_scaled(const Dual<S>& s) {
   return {scaled(s.r, e), scaled(s.d, e)};
 }
 
-/// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| on the
-/// safely scaled parts; where that subtraction would cancel (d mostly parallel to r), the form
-/// without it (runtime/perpendicular_part.hpp).
 /// The dual part d' of DQ-4 without the subtraction, out of line (rare) so that the common path
-/// stays small enough to inline.
+/// of normalized() stays small enough to inline.
 template <class S> [[gnu::noinline, gnu::cold]] Quat<S> perpendicular_dual_part(const Dual<S>& x, S n2) {
   const std::array<S, 4> p = runtime::perpendicular_times_norm2<S>({x.r.x, x.r.y, x.r.z, x.r.w}, {x.d.x, x.d.y, x.d.z, x.d.w});
   const S f = S(1) / (n2 * std::sqrt(n2));
   return {f * p[0], f * p[1], f * p[2], f * p[3]};
 }
 
+/// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| on the
+/// safely scaled parts; where that subtraction would cancel (d mostly parallel to r), the form
+/// without it (runtime/perpendicular_part.hpp).
 template <class S> Dual<S> normalized(const Dual<S>& s) {
   const Dual<S> x = safely_scaled(s);
   const S n2 = dot(x.r, x.r), n = std::sqrt(n2);
