@@ -1,23 +1,18 @@
-// The operations of the implementation ABI (impl_abi.h) as the benchmarks see them: for each op,
-// its input and output arrays in ABI layout (LAYOUT-1) and how each input is filled (Gen, see
-// inputs.hpp). Data only; op_cost.hpp adds the cost model, op_call.hpp the calls.
+// The operations of the implementation ABI as the benchmarks see them: for each op the benchmarks
+// time (those of rc_ops, ABI version 1), how each input array is filled (Gen, see inputs.hpp).
+// The op's identity and array counts come from the op list (abi_op_list.h, rotorcert/op_id.hpp);
+// op_cost.hpp adds the cost model, op_call.hpp the call.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <string_view>
 
+#include <rotorcert/op_id.hpp>
+
 namespace rotorcert::bench {
 
-/// The ABI ops, in the order of the rc_ops struct.
-enum class OpId {
-  normalize, compose, inverse, apply_vector, apply_bivector, apply_trivector, to_matrix, from_matrix,
-  to_axis_angle, from_axis_angle, log, exp, slerp, nlerp, blend_qlb, blend_log,
-  dq_from_rotation_translation, dq_compose, dq_apply_point, dq_normalize, dq_sclerp, dq_blend,
-  rotate_about_axis, skin_linear, skin_dual_quaternion,
-  count_
-};
-inline constexpr std::size_t kOpCount = static_cast<std::size_t>(OpId::count_);
+using rotorcert::OpId;
 
 /// How an input array is filled: values typical of animation data (inputs.cpp documents the
 /// distributions). "Anchor" = the element's first quaternion or dual-quaternion input.
@@ -52,7 +47,7 @@ inline constexpr std::size_t kMaxOutputs = 2;
 
 struct OpSpec {
   OpId id;
-  std::string_view name;  // the rc_ops slot
+  std::string_view name;  // the rc_ops slot (op_name(id))
   bool nway = false;      // takes k influences per element
   std::size_t n_in = 0, n_out = 0;
   std::array<ArraySpec, kMaxInputs> in{};
@@ -63,55 +58,69 @@ namespace detail {
 constexpr ArraySpec I(std::string_view name, int stride, Gen gen) { return {name, stride, false, gen}; }
 constexpr ArraySpec K(std::string_view name, int stride, Gen gen) { return {name, stride, true, gen}; }
 constexpr ArraySpec O(std::string_view name, int stride) { return {name, stride, false, Gen::point}; }
+/// An op's entry: its arrays as given, its name, kind and array counts from the op list.
+constexpr OpSpec spec(OpId id, std::array<ArraySpec, kMaxInputs> in, std::array<ArraySpec, kMaxOutputs> out) {
+  const OpInfo& row = op_info(id);
+  return {id, row.name, row.kind != OpKind::ELEM, static_cast<std::size_t>(row.inputs),
+          static_cast<std::size_t>(row.outputs), in, out};
+}
 }  // namespace detail
 
-/// Every op, indexed by OpId.
-inline constexpr std::array<OpSpec, kOpCount> kOps = [] {
+/// The ops of rc_ops (ABI version 1), in its order: entry i is OpId i.
+inline constexpr std::size_t kTimedOpCount = 25;
+inline constexpr std::array<OpSpec, kTimedOpCount> kTimedOps = [] {
   using namespace detail;
   using G = Gen;
   const ArraySpec q = I("q", 4, G::unit_quat), v = I("v", 3, G::point), t = I("t", 1, G::param_t);
   const ArraySpec out_q = O("out_q", 4), out_v = O("out_v", 3), out_d = O("out_d", 8), out_p = O("out_p", 3);
-  return std::array<OpSpec, kOpCount>{{
-      {OpId::normalize, "normalize", false, 1, 1, {I("q", 4, G::scaled_quat)}, {out_q}},
-      {OpId::compose, "compose", false, 2, 1, {I("a", 4, G::unit_quat), I("b", 4, G::unit_quat)}, {out_q}},
-      {OpId::inverse, "inverse", false, 1, 1, {q}, {out_q}},
-      {OpId::apply_vector, "apply_vector", false, 2, 1, {q, v}, {out_v}},
-      {OpId::apply_bivector, "apply_bivector", false, 2, 1, {q, I("b", 3, G::point)}, {O("out_b", 3)}},
-      {OpId::apply_trivector, "apply_trivector", false, 2, 1, {q, I("s", 1, G::trivector)}, {O("out_s", 1)}},
-      {OpId::to_matrix, "to_matrix", false, 1, 1, {q}, {O("out_m", 9)}},
-      {OpId::from_matrix, "from_matrix", false, 1, 1, {I("m", 9, G::rot_matrix)}, {out_q}},
-      {OpId::to_axis_angle, "to_axis_angle", false, 1, 2, {q}, {O("out_angle", 1), O("out_axis", 3)}},
-      {OpId::from_axis_angle, "from_axis_angle", false, 2, 1, {I("angle", 1, G::angle), I("axis", 3, G::unit_axis)},
-       {out_q}},
-      {OpId::log, "log", false, 1, 1, {q}, {out_v}},
-      {OpId::exp, "exp", false, 1, 1, {I("v", 3, G::log_vec)}, {out_q}},
-      {OpId::slerp, "slerp", false, 3, 1, {I("a", 4, G::unit_quat), I("b", 4, G::near_quat), t}, {out_q}},
-      {OpId::nlerp, "nlerp", false, 3, 1, {I("a", 4, G::unit_quat), I("b", 4, G::near_quat), t}, {out_q}},
-      {OpId::blend_qlb, "blend_qlb", true, 2, 1, {K("q", 4, G::cluster_quat), K("w", 1, G::weights)}, {out_q}},
-      {OpId::blend_log, "blend_log", true, 2, 1, {K("q", 4, G::cluster_quat), K("w", 1, G::weights)}, {out_q}},
-      {OpId::dq_from_rotation_translation, "dq_from_rotation_translation", false, 2, 1, {q, I("t", 3, G::point)},
-       {out_d}},
-      {OpId::dq_compose, "dq_compose", false, 2, 1, {I("a", 8, G::unit_dq), I("b", 8, G::unit_dq)}, {out_d}},
-      {OpId::dq_apply_point, "dq_apply_point", false, 2, 1, {I("d", 8, G::unit_dq), I("p", 3, G::point)}, {out_p}},
-      {OpId::dq_normalize, "dq_normalize", false, 1, 1, {I("d", 8, G::scaled_dq)}, {out_d}},
-      {OpId::dq_sclerp, "dq_sclerp", false, 3, 1, {I("a", 8, G::unit_dq), I("b", 8, G::near_dq), t}, {out_d}},
-      {OpId::dq_blend, "dq_blend", true, 2, 1, {K("d", 8, G::cluster_dq), K("w", 1, G::weights)}, {out_d}},
-      {OpId::rotate_about_axis, "rotate_about_axis", false, 4, 1,
-       {I("c", 3, G::point), I("u", 3, G::unit_axis), I("angle", 1, G::angle), I("p", 3, G::point)}, {out_p}},
-      {OpId::skin_linear, "skin_linear", true, 4, 1,
-       {K("q", 4, G::cluster_quat), K("t", 3, G::point), K("w", 1, G::weights), I("v", 3, G::point)}, {out_v}},
-      {OpId::skin_dual_quaternion, "skin_dual_quaternion", true, 4, 1,
-       {K("q", 4, G::cluster_quat), K("t", 3, G::point), K("w", 1, G::weights), I("v", 3, G::point)}, {out_v}},
+  const ArraySpec skin_q = K("q", 4, G::cluster_quat), skin_t = K("t", 3, G::point), skin_w = K("w", 1, G::weights);
+  return std::array<OpSpec, kTimedOpCount>{{
+      spec(OpId::normalize, {I("q", 4, G::scaled_quat)}, {out_q}),
+      spec(OpId::compose, {I("a", 4, G::unit_quat), I("b", 4, G::unit_quat)}, {out_q}),
+      spec(OpId::inverse, {q}, {out_q}),
+      spec(OpId::apply_vector, {q, v}, {out_v}),
+      spec(OpId::apply_bivector, {q, I("b", 3, G::point)}, {O("out_b", 3)}),
+      spec(OpId::apply_trivector, {q, I("s", 1, G::trivector)}, {O("out_s", 1)}),
+      spec(OpId::to_matrix, {q}, {O("out_m", 9)}),
+      spec(OpId::from_matrix, {I("m", 9, G::rot_matrix)}, {out_q}),
+      spec(OpId::to_axis_angle, {q}, {O("out_angle", 1), O("out_axis", 3)}),
+      spec(OpId::from_axis_angle, {I("angle", 1, G::angle), I("axis", 3, G::unit_axis)}, {out_q}),
+      spec(OpId::log, {q}, {out_v}),
+      spec(OpId::exp, {I("v", 3, G::log_vec)}, {out_q}),
+      spec(OpId::slerp, {I("a", 4, G::unit_quat), I("b", 4, G::near_quat), t}, {out_q}),
+      spec(OpId::nlerp, {I("a", 4, G::unit_quat), I("b", 4, G::near_quat), t}, {out_q}),
+      spec(OpId::blend_qlb, {K("q", 4, G::cluster_quat), K("w", 1, G::weights)}, {out_q}),
+      spec(OpId::blend_log, {K("q", 4, G::cluster_quat), K("w", 1, G::weights)}, {out_q}),
+      spec(OpId::dq_from_rotation_translation, {q, I("t", 3, G::point)}, {out_d}),
+      spec(OpId::dq_compose, {I("a", 8, G::unit_dq), I("b", 8, G::unit_dq)}, {out_d}),
+      spec(OpId::dq_apply_point, {I("d", 8, G::unit_dq), I("p", 3, G::point)}, {out_p}),
+      spec(OpId::dq_normalize, {I("d", 8, G::scaled_dq)}, {out_d}),
+      spec(OpId::dq_sclerp, {I("a", 8, G::unit_dq), I("b", 8, G::near_dq), t}, {out_d}),
+      spec(OpId::dq_blend, {K("d", 8, G::cluster_dq), K("w", 1, G::weights)}, {out_d}),
+      spec(OpId::rotate_about_axis,
+           {I("c", 3, G::point), I("u", 3, G::unit_axis), I("angle", 1, G::angle), I("p", 3, G::point)}, {out_p}),
+      spec(OpId::skin_linear, {skin_q, skin_t, skin_w, I("v", 3, G::point)}, {out_v}),
+      spec(OpId::skin_dual_quaternion, {skin_q, skin_t, skin_w, I("v", 3, G::point)}, {out_v}),
   }};
 }();
 
+// Every op of rc_ops has its entry, in order, and every array the list gives has a spec.
 static_assert([] {
-  for (std::size_t i = 0; i < kOpCount; ++i)
-    if (static_cast<std::size_t>(kOps[i].id) != i) return false;
+  std::size_t since1 = 0;
+  for (const OpInfo& row : rotorcert::kOps) since1 += row.since == 1;
+  if (since1 != kTimedOpCount) return false;
+  for (std::size_t i = 0; i < kTimedOpCount; ++i) {
+    const OpSpec& o = kTimedOps[i];
+    if (op_index(o.id) != i || o.n_in > kMaxInputs || o.n_out > kMaxOutputs) return false;
+    for (std::size_t j = 0; j < o.n_in; ++j)
+      if (o.in[j].stride == 0) return false;
+    for (std::size_t j = 0; j < o.n_out; ++j)
+      if (o.out[j].stride == 0) return false;
+  }
   return true;
-}(), "kOps must be indexed by OpId");
+}(), "kTimedOps must hold rc_ops' ops in the op list's order, every array specified");
 
-constexpr const OpSpec& op_spec(OpId id) { return kOps[static_cast<std::size_t>(id)]; }
+constexpr const OpSpec& op_spec(OpId id) { return kTimedOps[op_index(id)]; }
 
 /// Scalars of one array for n elements with k influences.
 constexpr std::size_t array_scalars(const ArraySpec& a, std::size_t n, std::size_t k) {

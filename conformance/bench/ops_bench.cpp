@@ -27,8 +27,8 @@ constexpr const char* scalar_name() {
   return sizeof(S) == 4 ? "float" : "double";
 }
 
-template <class S, class Ops>
-void run_op(benchmark::State& state, const rc_impl& table, const Ops& ops, OpId id, std::size_t n,
+template <class S>
+void run_op(benchmark::State& state, const rc_impl& table, OpId id, std::size_t n,
             std::size_t stream_bytes, const std::string& key) {
   const OpSpec& op = op_spec(id);
   const std::size_t k = op.nway ? kInfluences : 1;
@@ -53,38 +53,43 @@ void run_op(benchmark::State& state, const rc_impl& table, const Ops& ops, OpId 
     }
   };
 
-  Workspace& ws = workspace();
-  if (std::byte* base = ws.reuse(key)) {
-    point_args(base);
-  } else {
-    base = ws.fresh(key, sets * layout.size());
-    point_args(base);
-    S* in[kMaxInputs] = {};
-    for (std::size_t j = 0; j < op.n_in; ++j) in[j] = reinterpret_cast<S*>(base + in_at[j]);
-    fill_inputs<S>(op, n, k, in);
-    replicate(base, layout.size(), sets);
-    // The inputs are valid, so the op must run and say OK for every element; timing an error
-    // path would measure something else.
-    const int rc = call<S>(ops, id, args[0]);
-    std::size_t bad = 0;
-    for (std::size_t i = 0; i < n; ++i) bad += args[0].status[i] != RC_OK;
-    if (rc != 0 || bad != 0) {
-      ws.forget();
-      state.SkipWithError(rc != 0 ? ("call returned " + std::to_string(rc)).c_str()
-                                  : (std::to_string(bad) + " of " + std::to_string(n) +
-                                     " valid elements got a non-OK status")
-                                        .c_str());
-      return;
+  bool ran = true;
+  with_call<S>(table, id, [&](auto call) {
+    Workspace& ws = workspace();
+    if (std::byte* base = ws.reuse(key)) {
+      point_args(base);
+    } else {
+      base = ws.fresh(key, sets * layout.size());
+      point_args(base);
+      S* in[kMaxInputs] = {};
+      for (std::size_t j = 0; j < op.n_in; ++j) in[j] = reinterpret_cast<S*>(base + in_at[j]);
+      fill_inputs<S>(op, n, k, in);
+      replicate(base, layout.size(), sets);
+      // The inputs are valid, so the op must run and say OK for every element; timing an error
+      // path would measure something else.
+      const int rc = call(args[0]);
+      std::size_t bad = 0;
+      for (std::size_t i = 0; i < n; ++i) bad += args[0].status[i] != RC_OK;
+      if (rc != 0 || bad != 0) {
+        ws.forget();
+        state.SkipWithError(rc != 0 ? ("call returned " + std::to_string(rc)).c_str()
+                                    : (std::to_string(bad) + " of " + std::to_string(n) +
+                                       " valid elements got a non-OK status")
+                                          .c_str());
+        ran = false;
+        return;
+      }
     }
-  }
 
-  std::size_t s = 0;
-  for (auto _ : state) {
-    const int rc = call<S>(ops, id, args[s]);
-    benchmark::DoNotOptimize(rc);  // the const overload: an input operand, nothing to drop
-    benchmark::ClobberMemory();  // the outputs count as read: nothing may be dropped or hoisted
-    if (++s == sets) s = 0;
-  }
+    std::size_t s = 0;
+    for (auto _ : state) {
+      const int rc = call(args[s]);
+      benchmark::DoNotOptimize(rc);  // the const overload: an input operand, nothing to drop
+      benchmark::ClobberMemory();  // the outputs count as read: nothing may be dropped or hoisted
+      if (++s == sets) s = 0;
+    }
+  });
+  if (!ran) return;
 
   ElementBench b;
   b.impl = table.name;
@@ -103,16 +108,16 @@ void run_op(benchmark::State& state, const rc_impl& table, const Ops& ops, OpId 
   report(state, b);
 }
 
-template <class S, class Ops>
-void register_table(const rc_impl& table, const Ops& ops, const RunConfig& config) {
-  for (const OpSpec& op : kOps) {
-    if (!has(ops, op.id)) continue;
+template <class S>
+void register_table(const rc_impl& table, const RunConfig& config) {
+  for (const OpSpec& op : kTimedOps) {
+    if (!has_op(table, op.id)) continue;
     for (const std::size_t n : config.sizes) {
       const std::string name = "op/" + std::string(op.name) + "/" + table.name + "/" + scalar_name<S>() + "/" +
                                std::to_string(n);
       const std::size_t stream_bytes = config.stream_bytes;
-      benchmark::RegisterBenchmark(name.c_str(), [&table, &ops, id = op.id, n, stream_bytes, name](benchmark::State& st) {
-        run_op<S>(st, table, ops, id, n, stream_bytes, name);
+      benchmark::RegisterBenchmark(name.c_str(), [&table, id = op.id, n, stream_bytes, name](benchmark::State& st) {
+        run_op<S>(st, table, id, n, stream_bytes, name);
       });
     }
   }
@@ -124,8 +129,8 @@ void register_op_benchmarks(const RunConfig& config, const std::vector<const rc_
   std::vector<const rc_impl*> tables = impl::builtin_tables();
   tables.insert(tables.end(), extra.begin(), extra.end());
   for (const rc_impl* t : tables) {
-    if (t->scalar == RC_SCALAR_FLOAT32 && t->f32 != nullptr) register_table<float>(*t, *t->f32, config);
-    if (t->scalar == RC_SCALAR_FLOAT64 && t->f64 != nullptr) register_table<double>(*t, *t->f64, config);
+    if (t->scalar == RC_SCALAR_FLOAT32) register_table<float>(*t, config);
+    if (t->scalar == RC_SCALAR_FLOAT64) register_table<double>(*t, config);
   }
 }
 

@@ -54,7 +54,7 @@ pub type FnBlend<S> = unsafe extern "C" fn(usize, usize, *const S, *const S, *mu
 pub type FnSkin<S> =
     unsafe extern "C" fn(usize, usize, *const S, *const S, *const S, *const S, *mut S, *mut u8) -> c_int;
 
-/// RC_DECLARE_OPS of impl_abi.h, field for field (None is the NULL of NOT_SUPPORTED).
+/// RC_ABI_OPS_V1 of abi_op_list.h, field for field (None is the NULL of NOT_SUPPORTED).
 #[repr(C)]
 pub struct Ops<S: 'static> {
     pub normalize: Option<Fn1<S>>,
@@ -115,7 +115,7 @@ impl<S: 'static> Ops<S> {
     };
 }
 
-/// RC_DECLARE_OPS3 of impl_abi.h (ABI version 3), field for field: the operations read only from a
+/// RC_ABI_OPS_V3 of abi_op_list.h (ABI version 3), field for field: the operations read only from a
 /// table whose abi_version is >= 3, in their own struct (rc_impl.f32_v3 / f64_v3).
 #[repr(C)]
 pub struct Ops3<S: 'static> {
@@ -130,7 +130,7 @@ impl<S: 'static> Ops3<S> {
     pub const NONE: Self = Ops3 { to_angle: None, to_axis: None, sqrt: None, dq_to_rotation_translation: None };
 }
 
-/// RC_DECLARE_OPS4 of impl_abi.h (ABI version 4), field for field: the operations read only from a
+/// RC_ABI_OPS_V4 of abi_op_list.h (ABI version 4), field for field: the operations read only from a
 /// table whose abi_version is >= 4, in their own struct (rc_impl.f32_v4 / f64_v4). Layouts: a dual
 /// vector [xi_r xyz, xi_d xyz] (6 scalars); a rigid transform as a quaternion q and a vector t.
 #[repr(C)]

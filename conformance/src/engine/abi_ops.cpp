@@ -113,7 +113,14 @@ std::vector<AbiOp> build() {
   auto out = [](const char* name, int stride, Measure measure) { return Array{name, stride, false, measure}; };
   auto influences = [](const char* name, int stride) { return Array{name, stride, true, Measure::scalar}; };
   std::vector<AbiOp> ops;
+  // Rows in the op list's order: entry i describes OpId i, and its arrays are the list's.
   auto add = [&](AbiOp op) {
+    const OpInfo& info = kOps.at(ops.size());
+    if (op.name != info.name || op.inputs.size() != static_cast<std::size_t>(info.inputs) ||
+        op.outputs.size() != static_cast<std::size_t>(info.outputs) || op.nway != (info.kind != OpKind::ELEM))
+      throw std::logic_error("engine::abi_ops: entry " + std::to_string(ops.size()) + " (" + op.name +
+                             ") does not match row " + std::string(info.name) + " of abi_op_list.h");
+    op.id = static_cast<OpId>(ops.size());
     if (!op.scale) op.scale = unit_scale;
     ops.push_back(std::move(op));
   };
@@ -260,95 +267,40 @@ std::vector<AbiOp> build() {
   add({"rigid_inverse", {rq, rt}, {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)}, false,
        [](const Values& in, std::size_t) { return pair(clause::RIGID_3_inverse(quat(in[0]), vec3(in[1]))); },
        [](const Values& in, std::size_t) { return std::max(Real(1), length_of(in[1], 0)); }});
+  if (ops.size() != kOpCount) throw std::logic_error("engine::abi_ops: fewer entries than abi_op_list.h has rows");
   return ops;
 }
 
 // ---- calling a table --------------------------------------------------------------------
 
+/// Calls (or probes) op through the slot the op list (abi_op_list.h) gives it. An appended struct
+/// is read only from a table whose abi_version is at least the one that added it (an older
+/// table's memory ends before it): with_slot sees to that.
 template <class S>
-const S* cin(const std::vector<const void*>& in, std::size_t i) { return static_cast<const S*>(in.at(i)); }
-template <class S>
-S* cout(const std::vector<void*>& out, std::size_t i) { return static_cast<S*>(out.at(i)); }
-
-// One table slot, in whichever of the structs rc_ops_*, rc_ops3_*, rc_ops4_* has it: -1 when the
-// struct lacks it or it is NULL (NOT_SUPPORTED), 0 when only probing, else the call. The slot is
-// parenthesised so that a slot named like a function-like macro (sqrt under <tgmath.h>) works.
-#define RC_CALL(slot, ...)                                \
-  if constexpr (requires { o.slot; }) {                   \
-    if (op == #slot) {                                    \
-      if (o.slot == nullptr) return -1;                   \
-      return probe_only ? 0 : (o.slot)(__VA_ARGS__);      \
-    }                                                     \
-  }
-
-template <class S, class Ops>
-int call_ops(const Ops& o, const std::string& op, std::size_t n, std::size_t k, const std::vector<const void*>& in,
-             const std::vector<void*>& out, std::uint8_t* st, bool probe_only) {
-  auto I = [&](std::size_t i) { return cin<S>(in, i); };
-  auto O = [&](std::size_t i) { return cout<S>(out, i); };
-  [[maybe_unused]] const std::size_t influences = k;
-  // ABI version 1 (rc_ops_*)
-  RC_CALL(normalize, n, I(0), O(0), st)
-  RC_CALL(compose, n, I(0), I(1), O(0), st)
-  RC_CALL(inverse, n, I(0), O(0), st)
-  RC_CALL(apply_vector, n, I(0), I(1), O(0), st)
-  RC_CALL(apply_bivector, n, I(0), I(1), O(0), st)
-  RC_CALL(apply_trivector, n, I(0), I(1), O(0), st)
-  RC_CALL(to_matrix, n, I(0), O(0), st)
-  RC_CALL(from_matrix, n, I(0), O(0), st)
-  RC_CALL(to_axis_angle, n, I(0), O(0), O(1), st)
-  RC_CALL(from_axis_angle, n, I(0), I(1), O(0), st)
-  RC_CALL(log, n, I(0), O(0), st)
-  RC_CALL(exp, n, I(0), O(0), st)
-  RC_CALL(slerp, n, I(0), I(1), I(2), O(0), st)
-  RC_CALL(nlerp, n, I(0), I(1), I(2), O(0), st)
-  RC_CALL(blend_qlb, n, influences, I(0), I(1), O(0), st)
-  RC_CALL(blend_log, n, influences, I(0), I(1), O(0), st)
-  RC_CALL(dq_from_rotation_translation, n, I(0), I(1), O(0), st)
-  RC_CALL(dq_compose, n, I(0), I(1), O(0), st)
-  RC_CALL(dq_apply_point, n, I(0), I(1), O(0), st)
-  RC_CALL(dq_normalize, n, I(0), O(0), st)
-  RC_CALL(dq_sclerp, n, I(0), I(1), I(2), O(0), st)
-  RC_CALL(dq_blend, n, influences, I(0), I(1), O(0), st)
-  RC_CALL(rotate_about_axis, n, I(0), I(1), I(2), I(3), O(0), st)
-  RC_CALL(skin_linear, n, influences, I(0), I(1), I(2), I(3), O(0), st)
-  RC_CALL(skin_dual_quaternion, n, influences, I(0), I(1), I(2), I(3), O(0), st)
-  // ABI version 3 (rc_ops3_*)
-  RC_CALL(to_angle, n, I(0), O(0), st)
-  RC_CALL(to_axis, n, I(0), O(0), st)
-  RC_CALL(sqrt, n, I(0), O(0), st)
-  RC_CALL(dq_to_rotation_translation, n, I(0), O(0), O(1), st)
-  // ABI version 4 (rc_ops4_*)
-  RC_CALL(dq_log, n, I(0), O(0), st)
-  RC_CALL(dq_exp, n, I(0), O(0), st)
-  RC_CALL(rigid_compose, n, I(0), I(1), I(2), I(3), O(0), O(1), st)
-  RC_CALL(rigid_apply, n, I(0), I(1), I(2), O(0), st)
-  RC_CALL(rigid_inverse, n, I(0), I(1), O(0), O(1), st)
-  return -1;
+int dispatch(const rc_impl& table, const AbiOp& op, std::size_t n, std::size_t k, const std::vector<const void*>& in,
+             const std::vector<void*>& out, std::uint8_t* status, bool probe) {
+  const OpInfo& info = op_info(op.id);
+  if (!probe && (in.size() != static_cast<std::size_t>(info.inputs) || out.size() != static_cast<std::size_t>(info.outputs)))
+    throw std::logic_error("engine::call: " + op.name + " takes " + std::to_string(info.inputs) + " input and " +
+                           std::to_string(info.outputs) + " output arrays");
+  std::vector<const S*> ins;
+  std::vector<S*> outs;
+  for (const void* p : in) ins.push_back(static_cast<const S*>(p));
+  for (void* p : out) outs.push_back(static_cast<S*>(p));
+  const SlotArgs<S> args{n, k, ins.data(), outs.data(), status};
+  return with_slot<S>(table, op.id, [&](auto fn) {
+    if (fn == nullptr) return -1;
+    return probe ? 0 : invoke_slot(fn, args);
+  });
 }
 
-#undef RC_CALL
-
-/// Calls (or probes) op through the part of the table that holds it. Each op lives in exactly one
-/// of the structs, so they are tried in turn; an appended struct is read only from a table whose
-/// abi_version is at least the one that added it (an older table's memory ends before it).
-int dispatch(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
+int dispatch(const rc_impl& table, const std::string& name, std::size_t n, std::size_t k,
              const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status, bool probe) {
-  auto from = [&]<class S>(const auto* ops, std::uint32_t since) {
-    return ops != nullptr && table.abi_version >= since ? call_ops<S>(*ops, op, n, k, in, out, status, probe) : -1;
-  };
-  int r = -1;
-  if (table.scalar == RC_SCALAR_FLOAT32) {
-    if ((r = from.template operator()<float>(table.f32, 1)) != -1) return r;
-    if ((r = from.template operator()<float>(table.f32_v3, 3)) != -1) return r;
-    return from.template operator()<float>(table.f32_v4, 4);
-  }
-  if (table.scalar == RC_SCALAR_FLOAT64) {
-    if ((r = from.template operator()<double>(table.f64, 1)) != -1) return r;
-    if ((r = from.template operator()<double>(table.f64_v3, 3)) != -1) return r;
-    return from.template operator()<double>(table.f64_v4, 4);
-  }
-  return r;
+  const AbiOp* op = find_abi_op(name);
+  if (op == nullptr) return -1;
+  if (table.scalar == RC_SCALAR_FLOAT32) return dispatch<float>(table, *op, n, k, in, out, status, probe);
+  if (table.scalar == RC_SCALAR_FLOAT64) return dispatch<double>(table, *op, n, k, in, out, status, probe);
+  return -1;
 }
 
 }  // namespace

@@ -206,59 +206,44 @@ int skin(std::size_t n, std::size_t k, const S* q, const S* t, const S* w, const
   return 0;
 }
 
+/// The strides of a blend element function (k influences of A scalars, k weights -> B scalars).
+template <class Fn> struct BlendShape;
+template <class S, std::size_t A, std::size_t B>
+struct BlendShape<Status (*)(std::span<const std::array<S, A>>, std::span<const S>, std::array<S, B>&)> {
+  static constexpr std::size_t in = A, out = B;
+};
+
 }  // namespace detail
 
-// Each ROTORCERT_OP_* picks, for one table slot, the implementation's batch function if it has
-// one, else the element function wrapped in the batch loop, else NULL.
-#define ROTORCERT_OP_ELEMENTWISE(ops, Impl, name)                                               \
+// For one row of the op list (abi_op_list.h), ROTORCERT_OP_<kind> picks the implementation's batch
+// function if it has one (NAME_batch, with the slot's C signature), else its element function
+// wrapped in the batch loop of that kind, else leaves the slot NULL (NOT_SUPPORTED).
+#define ROTORCERT_OP_ELEM(ops, Impl, name)                                                       \
   if constexpr (requires { &Impl::name##_batch; }) {                                            \
     ops.name = &Impl::name##_batch;                                                              \
   } else if constexpr (requires { &Impl::name; }) {                                              \
     ops.name = &::rotorcert::impl::detail::Elementwise<&Impl::name, decltype(&Impl::name)>::run; \
   }
-#define ROTORCERT_OP_BLEND(ops, Impl, name, S, A, B)                          \
-  if constexpr (requires { &Impl::name##_batch; }) {                          \
-    ops.name = &Impl::name##_batch;                                            \
-  } else if constexpr (requires { &Impl::name; }) {                            \
-    ops.name = &::rotorcert::impl::detail::blend<&Impl::name, S, A, B>;        \
+#define ROTORCERT_OP_BLEND(ops, Impl, name)                                                                  \
+  if constexpr (requires { &Impl::name##_batch; }) {                                                         \
+    ops.name = &Impl::name##_batch;                                                                          \
+  } else if constexpr (requires { &Impl::name; }) {                                                          \
+    using Shape = ::rotorcert::impl::detail::BlendShape<decltype(&Impl::name)>;                              \
+    ops.name = &::rotorcert::impl::detail::blend<&Impl::name, typename Impl::Scalar, Shape::in, Shape::out>; \
   }
-#define ROTORCERT_OP_SKIN(ops, Impl, name, S)                                 \
-  if constexpr (requires { &Impl::name##_batch; }) {                          \
-    ops.name = &Impl::name##_batch;                                            \
-  } else if constexpr (requires { &Impl::name; }) {                            \
-    ops.name = &::rotorcert::impl::detail::skin<&Impl::name, S>;               \
+#define ROTORCERT_OP_SKIN(ops, Impl, name)                                             \
+  if constexpr (requires { &Impl::name##_batch; }) {                                   \
+    ops.name = &Impl::name##_batch;                                                     \
+  } else if constexpr (requires { &Impl::name; }) {                                     \
+    ops.name = &::rotorcert::impl::detail::skin<&Impl::name, typename Impl::Scalar>;    \
   }
+#define ROTORCERT_OP_SLOT(name, since, level, clauses, kind, in, out) ROTORCERT_OP_##kind(ops, Impl, name)
 
-/// The batched C table of an implementation struct.
+/// The batched C table of an implementation struct: ABI version 1's operations.
 template <class Impl>
 Ops<typename Impl::Scalar> make_ops() {
-  using S = typename Impl::Scalar;
-  Ops<S> ops{};
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, normalize)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, compose)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, inverse)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, apply_vector)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, apply_bivector)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, apply_trivector)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_matrix)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, from_matrix)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_axis_angle)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, from_axis_angle)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, log)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, exp)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, slerp)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, nlerp)
-  ROTORCERT_OP_BLEND(ops, Impl, blend_qlb, S, 4, 4)
-  ROTORCERT_OP_BLEND(ops, Impl, blend_log, S, 4, 4)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_from_rotation_translation)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_compose)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_apply_point)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_normalize)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_sclerp)
-  ROTORCERT_OP_BLEND(ops, Impl, dq_blend, S, 8, 8)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rotate_about_axis)
-  ROTORCERT_OP_SKIN(ops, Impl, skin_linear, S)
-  ROTORCERT_OP_SKIN(ops, Impl, skin_dual_quaternion, S)
+  Ops<typename Impl::Scalar> ops{};
+  RC_ABI_OPS_V1(ROTORCERT_OP_SLOT, S)
   return ops;
 }
 
@@ -266,10 +251,7 @@ Ops<typename Impl::Scalar> make_ops() {
 template <class Impl>
 Ops3<typename Impl::Scalar> make_ops3() {
   Ops3<typename Impl::Scalar> ops{};
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_angle)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, to_axis)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, sqrt)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_to_rotation_translation)
+  RC_ABI_OPS_V3(ROTORCERT_OP_SLOT, S)
   return ops;
 }
 
@@ -277,11 +259,7 @@ Ops3<typename Impl::Scalar> make_ops3() {
 template <class Impl>
 Ops4<typename Impl::Scalar> make_ops4() {
   Ops4<typename Impl::Scalar> ops{};
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_log)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, dq_exp)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rigid_compose)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rigid_apply)
-  ROTORCERT_OP_ELEMENTWISE(ops, Impl, rigid_inverse)
+  RC_ABI_OPS_V4(ROTORCERT_OP_SLOT, S)
   return ops;
 }
 

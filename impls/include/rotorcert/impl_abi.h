@@ -52,6 +52,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "abi_op_list.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -75,84 +77,22 @@ enum {
   RC_LEVEL_ROBUST = 1u << 5
 };
 
-/* The operations, for one scalar type S. Every function returns 0, or a nonzero value when
- * the call as a whole could not run (for example an allocation failed); per-element outcomes
- * go to status[]. The clause each operation answers to is named at its pointer. */
-#define RC_DECLARE_OPS(NAME, S)                                                                              \
-  typedef struct NAME {                                                                                      \
-    /* Core */                                                                                               \
-    int (*normalize)(size_t n, const S* q, S* out_q, uint8_t* status);                 /* NORM-1 */         \
-    int (*compose)(size_t n, const S* a, const S* b, S* out_q, uint8_t* status);       /* COMPOSE-1 */      \
-    int (*inverse)(size_t n, const S* q, S* out_q, uint8_t* status);                   /* INV-1 */          \
-    int (*apply_vector)(size_t n, const S* q, const S* v, S* out_v, uint8_t* status);  /* APPLY-1 */        \
-    int (*apply_bivector)(size_t n, const S* q, const S* b, S* out_b, uint8_t* status); /* APPLY-2 */       \
-    int (*apply_trivector)(size_t n, const S* q, const S* s, S* out_s, uint8_t* status); /* APPLY-3 */      \
-    int (*to_matrix)(size_t n, const S* q, S* out_m, uint8_t* status);                 /* MAT-1 */          \
-    int (*from_matrix)(size_t n, const S* m, S* out_q, uint8_t* status);               /* MAT-2, MAT-3 */   \
-    int (*to_axis_angle)(size_t n, const S* q, S* out_angle, S* out_axis, uint8_t* status); /* AXANG-1 */   \
-    int (*from_axis_angle)(size_t n, const S* angle, const S* axis, S* out_q, uint8_t* status); /* AXANG-2 */ \
-    /* Interp */                                                                                             \
-    int (*log)(size_t n, const S* q, S* out_v, uint8_t* status);                       /* LOG-1, LOG-2 */   \
-    int (*exp)(size_t n, const S* v, S* out_q, uint8_t* status);                       /* EXP-1 */          \
-    int (*slerp)(size_t n, const S* a, const S* b, const S* t, S* out_q, uint8_t* status); /* SLERP-* */    \
-    int (*nlerp)(size_t n, const S* a, const S* b, const S* t, S* out_q, uint8_t* status); /* NLERP-1 */    \
-    /* Blend: n blends of k influences each */                                                               \
-    int (*blend_qlb)(size_t n, size_t k, const S* q, const S* w, S* out_q, uint8_t* status); /* QLB-1 */    \
-    int (*blend_log)(size_t n, size_t k, const S* q, const S* w, S* out_q, uint8_t* status); /* LOGBLEND-1 */ \
-    /* Rigid */                                                                                              \
-    int (*dq_from_rotation_translation)(size_t n, const S* q, const S* t, S* out_d, uint8_t* status); /* DQ-1 */ \
-    int (*dq_compose)(size_t n, const S* a, const S* b, S* out_d, uint8_t* status);    /* DQ-2 */           \
-    int (*dq_apply_point)(size_t n, const S* d, const S* p, S* out_p, uint8_t* status); /* DQ-3 */          \
-    int (*dq_normalize)(size_t n, const S* d, S* out_d, uint8_t* status);              /* DQ-4 */           \
-    int (*dq_sclerp)(size_t n, const S* a, const S* b, const S* t, S* out_d, uint8_t* status); /* DQ-5 */   \
-    int (*dq_blend)(size_t n, size_t k, const S* d, const S* w, S* out_d, uint8_t* status); /* DQ-6 */      \
-    int (*rotate_about_axis)(size_t n, const S* c, const S* u, const S* angle, const S* p, S* out_p,       \
-                             uint8_t* status);                                          /* AXIS-1 */         \
-    /* Skinning: n vertices with k influences each (rotation, translation, weight) */                       \
-    int (*skin_linear)(size_t n, size_t k, const S* q, const S* t, const S* w, const S* v, S* out_v,       \
-                       uint8_t* status);                                                /* SKIN-1 */         \
-    int (*skin_dual_quaternion)(size_t n, size_t k, const S* q, const S* t, const S* w, const S* v,        \
-                                S* out_v, uint8_t* status);                             /* SKIN-2 */         \
-  } NAME
-
-RC_DECLARE_OPS(rc_ops_f32, float);
-RC_DECLARE_OPS(rc_ops_f64, double);
-
-/* The operations added in ABI version 3, same conventions (batch, NULL = NOT_SUPPORTED). Read
- * only from a table whose abi_version is >= 3. */
-#define RC_DECLARE_OPS3(NAME, S)                                                                             \
-  typedef struct NAME {                                                                                      \
-    /* Core: the two halves of to_axis_angle, for APIs that offer them apart */                             \
-    int (*to_angle)(size_t n, const S* q, S* out_angle, uint8_t* status);              /* AXANG-3 */        \
-    int (*to_axis)(size_t n, const S* q, S* out_axis, uint8_t* status);                /* AXANG-4 */        \
-    /* Interp: the rotor square root, half the rotation (C with <tgmath.h>: call (ops->sqrt)(...)) */      \
-    int (*sqrt)(size_t n, const S* q, S* out_q, uint8_t* status);                      /* SQRT-1 */         \
-    /* Rigid: the inverse of dq_from_rotation_translation */                                                \
-    int (*dq_to_rotation_translation)(size_t n, const S* d, S* out_q, S* out_t, uint8_t* status); /* DQ-7 */ \
-  } NAME
-
-RC_DECLARE_OPS3(rc_ops3_f32, float);
-RC_DECLARE_OPS3(rc_ops3_f64, double);
-
-/* The operations added in ABI version 4, same conventions. Read only from a table whose
- * abi_version is >= 4. Layouts (LAYOUT-1): a dual vector xi = xi_r + eps xi_d, the logarithm of a
- * unit dual quaternion, is 6 scalars [xi_r x, y, z, xi_d x, y, z]; a rigid transform as rotation +
- * translation is a quaternion q [x, y, z, w] (the rotation of q/|q|) and a vector t [x, y, z]
- * (x -> R x + t). */
-#define RC_DECLARE_OPS4(NAME, S)                                                                             \
-  typedef struct NAME {                                                                                      \
-    /* Rigid: the motor logarithm and exponential in dual-quaternion coordinates */                         \
-    int (*dq_log)(size_t n, const S* d, S* out_xi, uint8_t* status);                  /* DQ-8 */           \
-    int (*dq_exp)(size_t n, const S* xi, S* out_d, uint8_t* status);                  /* DQ-9 */           \
-    /* Rigid transforms held as rotation quaternion + translation (Isometry3, btTransform, ...) */          \
-    int (*rigid_compose)(size_t n, const S* qa, const S* ta, const S* qb, const S* tb, S* out_q, S* out_t,  \
-                         uint8_t* status);                                            /* RIGID-1 */        \
-    int (*rigid_apply)(size_t n, const S* q, const S* t, const S* p, S* out_p, uint8_t* status); /* RIGID-2 */ \
-    int (*rigid_inverse)(size_t n, const S* q, const S* t, S* out_q, S* out_t, uint8_t* status); /* RIGID-3 */ \
-  } NAME
-
-RC_DECLARE_OPS4(rc_ops4_f32, float);
-RC_DECLARE_OPS4(rc_ops4_f64, double);
+/* The operations, for one scalar type S: one function pointer per row of abi_op_list.h, in its
+ * order, with the signature that row gives (the list names the clause each operation answers to).
+ * Every function returns 0, or a nonzero value when the call as a whole could not run (for
+ * example an allocation failed); per-element outcomes go to status[].
+ *
+ * rc_ops_f32 / rc_ops_f64 hold ABI version 1's operations (RC_ABI_OPS_V1); the operations added
+ * later live in structs of their own, appended to rc_impl, so that no struct ever changes layout:
+ * rc_ops3_* (RC_ABI_OPS_V3), read only from a table whose abi_version is >= 3, and rc_ops4_*
+ * (RC_ABI_OPS_V4), read only from one whose abi_version is >= 4. (C with <tgmath.h>: call the
+ * square root slot as (ops->sqrt)(...).) */
+typedef struct rc_ops_f32 { RC_ABI_OPS_V1(RC_ABI_SLOT, float) } rc_ops_f32;
+typedef struct rc_ops_f64 { RC_ABI_OPS_V1(RC_ABI_SLOT, double) } rc_ops_f64;
+typedef struct rc_ops3_f32 { RC_ABI_OPS_V3(RC_ABI_SLOT, float) } rc_ops3_f32;
+typedef struct rc_ops3_f64 { RC_ABI_OPS_V3(RC_ABI_SLOT, double) } rc_ops3_f64;
+typedef struct rc_ops4_f32 { RC_ABI_OPS_V4(RC_ABI_SLOT, float) } rc_ops4_f32;
+typedef struct rc_ops4_f64 { RC_ABI_OPS_V4(RC_ABI_SLOT, double) } rc_ops4_f64;
 
 /* One implementation for one scalar type. */
 typedef struct rc_impl {

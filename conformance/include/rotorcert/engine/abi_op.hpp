@@ -10,12 +10,14 @@
 #include <vector>
 
 #include <rotorcert/impl_abi.h>
+#include <rotorcert/op_id.hpp>
 #include <rotorcert/reference/result.hpp>
 #include <rotorcert/reference/scalar.hpp>
 
 namespace rotorcert::engine {
 
 using ref::Real;
+using rotorcert::OpId;
 
 /// How an output array is compared with the reference (SPEC section 3).
 enum class Measure {
@@ -65,12 +67,12 @@ struct AbiOp {
   std::function<ReferenceResult(const Values& inputs, std::size_t k)> reference;
   /// The length scale of a case for Measure::point (max(1, |p|, |t|, ...)).
   std::function<Real(const Values& inputs, std::size_t k)> scale;
+  /// Its row of the op list (abi_op_list.h); abi_ops()[i].id == OpId(i).
+  OpId id = OpId::count_;
 };
 
-/// Every op of the ABI: those of rc_ops (v1) in their order, then those of rc_ops3 (v3: to_angle,
-/// to_axis, sqrt, dq_to_rotation_translation), which a table of abi_version < 3 never supports,
-/// then those of rc_ops4 (v4: dq_log, dq_exp, rigid_compose, rigid_apply, rigid_inverse), which a
-/// table of abi_version < 4 never supports.
+/// Every op of the ABI, entry i describing OpId i (the rows of abi_op_list.h in order; a table of
+/// abi_version < 3 never supports the version-3 ops, one of abi_version < 4 the version-4 ops).
 const std::vector<AbiOp>& abi_ops();
 /// The op of that name, or nullptr.
 const AbiOp* find_abi_op(const std::string& name);

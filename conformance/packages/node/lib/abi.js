@@ -2,7 +2,8 @@
 /* The operations of the rotorcert ABI as the vectors name them, and the output arrays of each. */
 
 /** Output arrays of each ABI op, in the order the op writes them, with their strides
- *  (impls/include/rotorcert/impl_abi.h; layouts of LAYOUT-1). `log_exp_round_trip` is EXP-2's
+ *  (the op list impls/include/rotorcert/abi_op_list.h; layouts of LAYOUT-1; ctest
+ *  conformance_abi_tables_match checks this table against it). `log_exp_round_trip` is EXP-2's
  *  round trip: exp of what log returned, not an ABI op of its own. */
 const OUTPUTS = Object.freeze({
   normalize: [['out_q', 4]], compose: [['out_q', 4]], inverse: [['out_q', 4]],
