@@ -21,6 +21,7 @@ install(TARGETS rotorcert_bench RUNTIME DESTINATION libexec/rotorcert COMPONENT 
 install(FILES
     ${PROJECT_SOURCE_DIR}/impls/include/rotorcert/impl_abi.h
     ${PROJECT_SOURCE_DIR}/impls/include/rotorcert/abi_op_list.h
+    ${PROJECT_SOURCE_DIR}/impls/include/rotorcert/op_id.hpp
     ${PROJECT_SOURCE_DIR}/impls/include/rotorcert/impl.hpp
     ${PROJECT_SOURCE_DIR}/impls/include/rotorcert/impl_table.hpp
   DESTINATION include/rotorcert COMPONENT tool)
