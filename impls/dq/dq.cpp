@@ -228,31 +228,65 @@ template <class S> S length(const Vec<S>& v) {
   return std::scalbn(std::sqrt(dot(u, u)), e);
 }
 
+/// v / len for len = |v| > 0: by the reciprocal where it is finite, else component by component
+/// (a subnormal |v|, whose reciprocal overflows in binary32: EDGE-1's full exponent range).
+template <class S> Vec<S> direction(const Vec<S>& v, S len) {
+  if (const S r = S(1) / len; std::isfinite(r)) [[likely]]
+    return r * v;
+  return {v.x / len, v.y / len, v.z / len};
+}
+
+/// The binary exponent of the largest |component| of a nonzero v, and v times 2^e exactly.
+template <class S> int own_exponent(const Vec<S>& v) {
+  using std::abs;
+  return std::ilogb(std::max({abs(v.x), abs(v.y), abs(v.z)}));
+}
+template <class S> Vec<S> scaled(const Vec<S>& v, int e) { return {std::scalbn(v.x, e), std::scalbn(v.y, e), std::scalbn(v.z, e)}; }
+
 /// A dual vector xi = xi_r + eps xi_d (DQ-8, DQ-9): the ABI's 6 scalars.
 template <class S> struct DualVec { Vec<S> r, d; };
 
 /// DQ-8 on validated input: with (r, d) = DQ-4(sigma), r = (cos b, sin b n), b = atan2(|r_v|, r_w)
 /// (no hemisphere flip): xi_r = b n, xi_d = a n + (b / sin b) d_perp with a = (d_v.n) cos b - d_w
-/// sin b. sin b = |r_v| > 0 here, so b / sin b is never 0/0 (-> 1 as b -> 0). r = +1: (0, d_v);
-/// r = -1: the branch cut, (pi t/|t|, t/2) with t the translation, +z for t = 0.
+/// sin b = t.n / 2. r = +1: (0, d_v); r = -1: the branch cut, (pi t/|t|, t/2) with t the
+/// translation, +z for t = 0.
 template <class S> DualVec<S> log(const Dual<S>& sigma) {
-  const Dual<S> u = normalized(sigma);
-  const Vec<S> rv = vec(u.r), dv = vec(u.d);
-  const S s = length(rv);
-  if (s == 0 && u.r.w > 0) return {{0, 0, 0}, dv};
+  const Vec<S> rv = vec(sigma.r);
+  const S s = length(rv);  // |r_v| of the input: the angle and axis are invariant under scale
   if (s == 0) {
+    const Dual<S> u = normalized(sigma);
+    if (u.r.w > 0) return {{0, 0, 0}, vec(u.d)};
     const Vec<S> t = translation(u);
     const S len = length(t);
     const S pi = S(3.14159265358979323846264338327950288);
     if (len == 0) return {{0, 0, pi}, {0, 0, 0}};
     return {(pi / len) * t, S(0.5) * t};
   }
-  const S b = std::atan2(s, u.r.w);
-  const Vec<S> n = (S(1) / s) * rv;
-  const S along = dot(dv, n);
-  const S a = along * u.r.w - u.d.w * s;
-  const Vec<S> perp = dv - along * n;
-  return {b * n, a * n + (b / s) * perp};
+  // Read off the input, not off DQ-4(sigma): where |r_v| << |r_w| the normalised vector part is
+  // subnormal and has lost the axis (EDGE-1). With x = sigma at a common power-of-two scale and
+  // t = DQ-1's translation of x:
+  //   b = atan2(|r_v|, r_w), n = r_v / |r_v|, a = t.n / 2,
+  //   (b / sin b) d'_perp = b (d_v)_perp / |r_v|   (d'_perp = (d_v)_perp / |r|, sin b = |r_v| / |r|),
+  // n and the quotient each from r_v and d_v scaled by their own powers of two, so that neither
+  // a tiny r_v nor huge parts lose bits or overflow on the way.
+  const int er = scale_exponent(sigma.r), ev = own_exponent(rv);
+  const Quat<S> r_own = scaled(sigma.r, -er);
+  const Vec<S> rv_own = scaled(rv, -ev);
+  const S nr = std::sqrt(dot(r_own, r_own)), len_own = std::sqrt(dot(rv_own, rv_own));  // |r|, |r_v| / 2^e
+  const S b = std::atan2(std::scalbn(len_own, ev - er), r_own.w);
+  const Vec<S> n = (S(1) / len_own) * rv_own;
+  const Dual<S> x = safely_scaled(sigma);
+  const S a = dot(translation(x), n) / (S(2) * dot(x.r, x.r));
+  const Vec<S> dv = vec(sigma.d);
+  if (dv.x == 0 && dv.y == 0 && dv.z == 0) return {b * n, a * n};
+  const int ed = own_exponent(dv);
+  const Vec<S> dv_own = scaled(dv, -ed);
+  const Vec<S> perp_own = dv_own - dot(dv_own, n) * n;
+  // (b / sin b) (d_v)_perp / |r|: up to pi/2 with sin b from b itself (b / sin b -> 1 exactly as b
+  // -> 0, whatever b's rounding); beyond, with sin b = |r_v| / |r| (b is accurate near pi, sin b
+  // is not).
+  if (b <= S(1.5707963267948966)) return {b * n, a * n + scaled(((b / std::sin(b)) / nr) * perp_own, ed - er)};
+  return {b * n, a * n + scaled((b / len_own) * perp_own, ed - ev)};
 }
 
 /// DQ-9: b = |xi_r|, n = xi_r / b, a = xi_d.n, xi_perp = xi_d - a n;
@@ -260,7 +294,7 @@ template <class S> DualVec<S> log(const Dual<S>& sigma) {
 template <class S> Dual<S> exp(const DualVec<S>& xi) {
   const S b = length(xi.r);
   if (b == 0) return {{0, 0, 0, 1}, {xi.d.x, xi.d.y, xi.d.z, 0}};
-  const Vec<S> n = (S(1) / b) * xi.r;
+  const Vec<S> n = direction(xi.r, b);
   const S a = dot(xi.d, n);
   const Vec<S> perp = xi.d - a * n;
   const S c = std::cos(b), sn = std::sin(b);

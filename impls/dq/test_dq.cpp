@@ -88,6 +88,14 @@ TEST(Dq, NormaliseMakesRealUnitAndDualOrthogonal) {
   });
 }
 
+TEST(Dq, LogAndExpKeepASubnormalRotation) {
+  RC_CLAUSE("DQ-8");
+  RC_CLAUSE("DQ-9");
+  RC_CLAUSE("EDGE-1");
+  rigid_laws::log_exp_keep_a_subnormal_rotation<float>(*rotorcert_impl_entry_dq(RC_ABI_VERSION, 0)->f32_v4);
+  rigid_laws::log_exp_keep_a_subnormal_rotation<double>(*rotorcert_impl_entry_dq(RC_ABI_VERSION, 1)->f64_v4);
+}
+
 TEST(Dq, SclerpOfPureTranslationIsLinearInT) {
   RC_CLAUSE("DQ-5");
   both([](auto tag) {

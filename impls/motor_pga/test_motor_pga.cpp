@@ -196,6 +196,14 @@ TEST(MotorPga, NormaliseMakesRealUnitAndDualOrthogonal) {
   });
 }
 
+TEST(MotorPga, LogAndExpKeepASubnormalRotation) {
+  RC_CLAUSE("DQ-8");
+  RC_CLAUSE("DQ-9");
+  RC_CLAUSE("EDGE-1");
+  rigid_laws::log_exp_keep_a_subnormal_rotation<float>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 0)->f32_v4);
+  rigid_laws::log_exp_keep_a_subnormal_rotation<double>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 1)->f64_v4);
+}
+
 TEST(MotorPga, InterpolationOfPureTranslationIsLinearInT) {
   RC_CLAUSE("DQ-5");
   both([](auto tag) {

@@ -121,6 +121,32 @@ template <class S> void normalise_removes_a_large_parallel_part(const Ops<S>& op
   }
 }
 
+/// DQ-8, DQ-9, EDGE-1: a rotation whose vector part is subnormal (from the format's smallest value
+/// to just below the smallest normal). Its direction n = v / |v| must be formed without 1 / |v|,
+/// which overflows in binary32 (fuzz/corpus/rigid_transforms/regression-campaign-*): exp and
+/// log answer OK with finite values that match the reference at their classes' strict bars.
+template <class S> void log_exp_keep_a_subnormal_rotation(const impl::Ops4<S>& ops) {
+  using L = std::numeric_limits<S>;
+  for (const S m : {S(1), S(125), S(std::ldexp(S(1), L::digits - 2))}) {
+    const S v = m * L::denorm_min();
+    const std::array<S, 6> xi{v, S(3) * L::denorm_min(), S(0), S(0.5), S(-2), S(1)};
+    D<S> d;
+    std::uint8_t st = 9;
+    ops.dq_exp(1, xi.data(), d.data(), &st);
+    ASSERT_EQ(st, RC_OK) << "xi_r.x = " << v;
+    const ref::DualVector<Real> rxi{rv(V<S>{xi[0], xi[1], xi[2]}), rv(V<S>{xi[3], xi[4], xi[5]})};
+    EXPECT_LE(rigid_err(d, ref::clause::DQ_9_exp(rxi).value), strict("eps16")) << "xi_r.x = " << v;
+    std::array<S, 6> back;
+    ops.dq_log(1, d.data(), back.data(), &st);
+    ASSERT_EQ(st, RC_OK) << "xi_r.x = " << v;
+    const auto want = ref::clause::DQ_8_log(rd(d)).value;
+    const Real scale = max(Real(1), norm3(want.real) + norm3(want.dual));
+    const Real err = max(norm3(sub3(rv(V<S>{back[0], back[1], back[2]}), want.real)),
+                         norm3(sub3(rv(V<S>{back[3], back[4], back[5]}), want.dual)));
+    EXPECT_LE((err / scale / eps<S>()).toDouble(), strict("eps32")) << "xi_r.x = " << v;
+  }
+}
+
 /// DQ-5: between two pure translations (non-unit representatives) no rotation appears, the real
 /// part is the identity exactly, and the translation is linear in t, extrapolation included.
 template <class S> void sclerp_of_pure_translation_is_linear_in_t(const Ops<S>& ops) {
