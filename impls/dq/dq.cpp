@@ -285,7 +285,10 @@ template <class S> DualVec<S> log(const Dual<S>& sigma) {
   // (b / sin b) (d_v)_perp / |r|: up to pi/2 with sin b from b itself (b / sin b -> 1 exactly as b
   // -> 0, whatever b's rounding); beyond, with sin b = |r_v| / |r| (b is accurate near pi, sin b
   // is not).
-  if (b <= S(1.5707963267948966)) return {b * n, a * n + scaled(((b / std::sin(b)) / nr) * perp_own, ed - er)};
+  if (b <= S(1.5707963267948966)) {
+    const S kappa = b == 0 ? S(1) : b / std::sin(b);  // b underflows where |r_v| / |r| does
+    return {b * n, a * n + scaled((kappa / nr) * perp_own, ed - er)};
+  }
   return {b * n, a * n + scaled((b / len_own) * perp_own, ed - ev)};
 }
 
