@@ -281,7 +281,13 @@ template <class S> DualVec<S> log(const Dual<S>& sigma) {
   if (dv.x == 0 && dv.y == 0 && dv.z == 0) return {b * n, a * n};
   const int ed = own_exponent(dv);
   const Vec<S> dv_own = scaled(dv, -ed);
-  const Vec<S> perp_own = dv_own - dot(dv_own, n) * n;
+  // (d_v)_perp without the subtraction d_v - (d_v.n) n, which cancels where d_v is nearly parallel
+  // to the axis and leaves eps |d_v| that b / sin b then magnifies near the cut: the fma form of
+  // runtime/perpendicular_part.hpp on the exact r_v (scaled by a power of two), not the rounded n.
+  const std::array<S, 4> pp =
+      runtime::perpendicular_times_norm2<S>({rv_own.x, rv_own.y, rv_own.z, 0}, {dv_own.x, dv_own.y, dv_own.z, 0});
+  const S len2 = dot(rv_own, rv_own);
+  const Vec<S> perp_own{pp[0] / len2, pp[1] / len2, pp[2] / len2};
   // (b / sin b) (d_v)_perp / |r|: up to pi/2 with sin b from b itself (b / sin b -> 1 exactly as b
   // -> 0, whatever b's rounding); beyond, with sin b = |r_v| / |r| (b is accurate near pi, sin b
   // is not).

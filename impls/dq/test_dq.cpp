@@ -96,6 +96,12 @@ TEST(Dq, LogAndExpKeepASubnormalRotation) {
   rigid_laws::log_exp_keep_a_subnormal_rotation<double>(*rotorcert_impl_entry_dq(RC_ABI_VERSION, 1)->f64_v4);
 }
 
+TEST(Dq, LogNearTheCutKeepsTheScrew) {
+  RC_CLAUSE("DQ-8");
+  rigid_laws::log_near_the_cut_keeps_the_screw<float>(*rotorcert_impl_entry_dq(RC_ABI_VERSION, 0)->f32_v4);
+  rigid_laws::log_near_the_cut_keeps_the_screw<double>(*rotorcert_impl_entry_dq(RC_ABI_VERSION, 1)->f64_v4);
+}
+
 TEST(Dq, SclerpOfPureTranslationIsLinearInT) {
   RC_CLAUSE("DQ-5");
   both([](auto tag) {

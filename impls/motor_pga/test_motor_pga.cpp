@@ -204,6 +204,12 @@ TEST(MotorPga, LogAndExpKeepASubnormalRotation) {
   rigid_laws::log_exp_keep_a_subnormal_rotation<double>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 1)->f64_v4);
 }
 
+TEST(MotorPga, LogNearTheCutKeepsTheScrew) {
+  RC_CLAUSE("DQ-8");
+  rigid_laws::log_near_the_cut_keeps_the_screw<float>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 0)->f32_v4);
+  rigid_laws::log_near_the_cut_keeps_the_screw<double>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 1)->f64_v4);
+}
+
 TEST(MotorPga, InterpolationOfPureTranslationIsLinearInT) {
   RC_CLAUSE("DQ-5");
   both([](auto tag) {

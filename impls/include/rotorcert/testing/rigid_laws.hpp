@@ -147,6 +147,43 @@ template <class S> void log_exp_keep_a_subnormal_rotation(const impl::Ops4<S>& o
   }
 }
 
+/// DQ-8 near the branch cut (b -> pi): b / sin b grows like 1 / (pi - b), and only the dual
+/// part's component perpendicular to the axis may be multiplied by it. A screw motion whose
+/// translation lies mostly along the axis must come back from log with its pitch intact (the
+/// parallel part cancelled, or rho^3 overflowed, in the old forms:
+/// fuzz/corpus/rigid_transforms/regression-*-log-*), down to gaps pi - b where rho^3 overflows.
+/// The error is relative to DQ-8's scale max(1, |xi_ref|, kappa |d_v|) (kappa = b / sin b of
+/// DQ-4(sigma): the amplification of the input's own rounding), at eps32's strict bar.
+template <class S> void log_near_the_cut_keeps_the_screw(const impl::Ops4<S>& ops) {
+  LawRng rng(11);
+  const Real pi = ref::ScalarTraits<Real>::pi();
+  for (int i = 0; i < 60; ++i) {
+    const V<S> axis = rng.vec<S>(1);
+    const Real len = norm3(rv(axis));
+    const Real gap = ldexp(Real(1), -int(rng.uniform(3, std::numeric_limits<S>::max_exponent / 3 + 20)));
+    const Real b = pi - gap;
+    const ref::Vec3<Real> nr{rv(axis)[0] / len, rv(axis)[1] / len, rv(axis)[2] / len};
+    const Real along = ldexp(Real(rng.uniform(-1, 1)), int(rng.uniform(0, 50))), off = Real(rng.uniform(-1, 1)) * gap;
+    const ref::DualVector<Real> xi{{b * nr[0], b * nr[1], b * nr[2]},
+                                   {along * nr[0] + off * nr[1], along * nr[1] - off * nr[0], along * nr[2]}};
+    const auto exact = ref::clause::DQ_9_exp(xi).value;
+    const D<S> d{S(exact.real.x.toDouble()), S(exact.real.y.toDouble()), S(exact.real.z.toDouble()), S(exact.real.w.toDouble()),
+                 S(exact.dual.x.toDouble()), S(exact.dual.y.toDouble()), S(exact.dual.z.toDouble()), S(exact.dual.w.toDouble())};
+    std::array<S, 6> got;
+    std::uint8_t st = 9;
+    ops.dq_log(1, d.data(), got.data(), &st);
+    ASSERT_EQ(st, RC_OK);
+    const auto want = ref::clause::DQ_8_log(rd(d)).value;
+    const auto u = ref::clause::DQ_4_normalize(rd(d)).value;
+    const Real sin_b = norm3({u.real.x, u.real.y, u.real.z});
+    const Real kappa = max(Real(1), atan2(sin_b, u.real.w) / sin_b);
+    const Real scale = max(max(Real(1), norm3(want.real) + norm3(want.dual)), kappa * norm3({u.dual.x, u.dual.y, u.dual.z}));
+    const Real err = max(norm3(sub3(rv(V<S>{got[0], got[1], got[2]}), want.real)),
+                         norm3(sub3(rv(V<S>{got[3], got[4], got[5]}), want.dual)));
+    EXPECT_LE((err / scale / eps<S>()).toDouble(), strict("eps32")) << "pi - b = " << gap << ", along = " << along;
+  }
+}
+
 /// DQ-5: between two pure translations (non-unit representatives) no rotation appears, the real
 /// part is the identity exactly, and the translation is linear in t, extrapolation included.
 template <class S> void sclerp_of_pure_translation_is_linear_in_t(const Ops<S>& ops) {
