@@ -254,13 +254,18 @@ template <class S> DualVec<S> log(const Dual<S>& sigma) {
   const Vec<S> rv = vec(sigma.r);
   const S s = length(rv);  // |r_v| of the input: the angle and axis are invariant under scale
   if (s == 0) {
-    const Dual<S> u = normalized(sigma);
-    if (u.r.w > 0) return {{0, 0, 0}, vec(u.d)};
-    const Vec<S> t = translation(u);
-    const S len = length(t);
+    // r = w exactly: t / 2 = d_v / w, formed with d_v and w at their own scales (a huge w would
+    // underflow d_v / |r| on the way); w < 0 is the branch cut, xi_r = pi t / |t|.
+    const Vec<S> dv = vec(sigma.d);
     const S pi = S(3.14159265358979323846264338327950288);
-    if (len == 0) return {{0, 0, pi}, {0, 0, 0}};
-    return {(pi / len) * t, S(0.5) * t};
+    if (dv.x == 0 && dv.y == 0 && dv.z == 0) return {{0, 0, sigma.r.w > 0 ? S(0) : pi}, {0, 0, 0}};
+    const int ed = own_exponent(dv), ew = std::ilogb(sigma.r.w);
+    const Vec<S> dv_own = scaled(dv, -ed);
+    const S w_own = std::scalbn(sigma.r.w, -ew);
+    const Vec<S> half_t = scaled((S(1) / w_own) * dv_own, ed - ew);
+    if (sigma.r.w > 0) return {{0, 0, 0}, half_t};
+    const Vec<S> t_dir = (S(-1) / std::sqrt(dot(dv_own, dv_own))) * dv_own;  // t / |t|, w < 0
+    return {pi * t_dir, half_t};
   }
   // Read off the input, not off DQ-4(sigma): where |r_v| << |r_w| the normalised vector part is
   // subnormal and has lost the axis (EDGE-1). With x = sigma at a common power-of-two scale and

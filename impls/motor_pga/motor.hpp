@@ -204,37 +204,39 @@ template <class S> Motor<S> exp(const Bivector<S>& B) {
           k * sc};
 }
 
-/// Past a quarter turn (s < 0), log's ideal part as a n^ + rho c_perp, n^ = the axis: there
-/// rho = b / n grows without bound towards the cut (n -> 0) and rho c - f p rho^3 beta would
-/// cancel its large parallel terms. From exp, c = cos b a n^ + sinc(b) u_perp and p = a sin b, so
-/// a = c.n^ / s (|s| >= n) or p / n, and u_perp = rho c_perp; c_perp without the subtraction
-/// (runtime/perpendicular_part.hpp) on the axis scaled by its own power of two, not the rounded n^.
-template <class S> [[gnu::noinline]] V3<S> ideal_log_past_quarter_turn(const Motor<S>& m, S n, S rho) {
+/// log past a quarter turn (s < 0, n > 0). Towards the cut (n -> 0) rho = b / n grows without
+/// bound: rho c - f p rho^3 beta would cancel its large parallel terms (and rho^3 overflow), and n
+/// itself, |r_v| of a unit motor, can be subnormal with few bits. So the axis comes from the
+/// Euclidean part scaled by its own power of two, beta = b n^, and the ideal part is
+/// a n^ + (b / n) c_perp: from exp, c = cos b a n^ + sinc(b) u_perp and p = a sin b, so
+/// a = c.n^ / s (|s| >= n) or p / n; c_perp without the subtraction (perpendicular_part.hpp).
+template <class S> [[gnu::noinline]] Bivector<S> log_past_quarter_turn(const Motor<S>& m) {
   using std::abs;
   const V3<S> bv = euclid(m), c = ideal(m);
   const int e = std::ilogb(std::max({abs(bv[0]), abs(bv[1]), abs(bv[2])}));
   const V3<S> w{std::scalbn(bv[0], -e), std::scalbn(bv[1], -e), std::scalbn(bv[2], -e)};
   const S w2 = dot3(w, w), wn = std::sqrt(w2);
+  const S n = std::scalbn(wn, e);  // |r_v|, rounded once
+  const S b = std::atan2(n, m.s);
   const V3<S> axis{w[0] / wn, w[1] / wn, w[2] / wn};
   const S a = abs(m.s) >= n ? dot3(c, axis) / m.s : m.e0123 / n;
   const auto pp = runtime::perpendicular_times_norm2<S>({w[0], w[1], w[2], 0}, {c[0], c[1], c[2], 0});
-  return {a * axis[0] + rho * (pp[0] / w2), a * axis[1] + rho * (pp[1] / w2), a * axis[2] + rho * (pp[2] / w2)};
+  const S k = b / (w2 * wn);  // (b / n) c_perp = scalbn(k pp, -e)
+  return {b * axis[0], b * axis[1], b * axis[2], a * axis[0] + std::scalbn(k * pp[0], -e),
+          a * axis[1] + std::scalbn(k * pp[1], -e), a * axis[2] + std::scalbn(k * pp[2], -e)};
 }
 
 /// log of a unit motor with s > -1 (interpolation only takes it with s >= 0, b <= pi/2), the
 /// inverse of exp: with n = |Euclidean part| = sin b, b = atan2(n, s), rho = b / n (-> 1):
 ///   beta = rho (e23, e31, e12),   u = rho c - f(b) p rho^3 (e23, e31, e12)
 /// (from exp: k = u.beta = p rho, sinc(b) u = c - f k beta). n = 0: the log of the translator,
-/// beta = 0 and u = c. Past a quarter turn, u as ideal_log_past_quarter_turn says.
+/// beta = 0 and u = c. Past a quarter turn: log_past_quarter_turn.
 template <class S> Bivector<S> log(const Motor<S>& m) {
   const V3<S> bv = euclid(m), c = ideal(m);
+  if (m.s < 0 && (bv[0] != 0 || bv[1] != 0 || bv[2] != 0)) return log_past_quarter_turn(m);
   const S n = std::sqrt(dot3(bv, bv));
   const S b = std::atan2(n, m.s);
   const S rho = n > 0 ? b / n : S(1);
-  if (m.s < 0 && n > 0) {
-    const V3<S> u = ideal_log_past_quarter_turn(m, n, rho);
-    return {rho * bv[0], rho * bv[1], rho * bv[2], u[0], u[1], u[2]};
-  }
   const S g = coupling(b, n, m.s) * m.e0123 * rho * rho * rho;
   return {rho * bv[0], rho * bv[1], rho * bv[2], rho * c[0] - g * bv[0], rho * c[1] - g * bv[1], rho * c[2] - g * bv[2]};
 }
