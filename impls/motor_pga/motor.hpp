@@ -204,42 +204,49 @@ template <class S> Motor<S> exp(const Bivector<S>& B) {
           k * sc};
 }
 
-/// log past a quarter turn (s < 0, n > 0). Towards the cut (n -> 0) rho = b / n grows without
-/// bound: rho c - f p rho^3 beta would cancel its large parallel terms (and rho^3 overflow), and n
-/// itself, |r_v| of a unit motor, can be subnormal with few bits. So the axis comes from the
-/// Euclidean part scaled by its own power of two, beta = b n^, and the ideal part is
-/// a n^ + (b / n) c_perp: from exp, c = cos b a n^ + sinc(b) u_perp and p = a sin b, so
-/// a = c.n^ / s (|s| >= n) or p / n; c_perp without the subtraction (perpendicular_part.hpp).
-template <class S> [[gnu::noinline]] Bivector<S> log_past_quarter_turn(const Motor<S>& m) {
+/// log past a quarter turn (s < 0, n > 0) of the unit motor m, whose rotor part was `raw` (s, e23,
+/// e31, e12) before normalising: the angle and axis are read off raw. Towards the cut (n -> 0)
+/// rho = b / n grows without bound: rho c - f p rho^3 beta would cancel its large parallel terms
+/// (and rho^3 overflow), and n = |raw_v| / |raw| can be subnormal in m with few bits left. So the
+/// axis comes from raw's Euclidean part scaled by its own power of two, n from the two parts' own
+/// scales, beta = b n^, and the ideal part is a n^ + (b / n) c_perp: from exp, c = cos b a n^ +
+/// sinc(b) u_perp and p = a sin b, so a = c.n^ / s (|s| >= n) or p / n; c_perp without the
+/// subtraction (perpendicular_part.hpp).
+template <class S> [[gnu::noinline]] Bivector<S> log_past_quarter_turn(const Motor<S>& m, const std::array<S, 4>& raw) {
   using std::abs;
-  const V3<S> bv = euclid(m), c = ideal(m);
-  const int e = std::ilogb(std::max({abs(bv[0]), abs(bv[1]), abs(bv[2])}));
-  const V3<S> w{std::scalbn(bv[0], -e), std::scalbn(bv[1], -e), std::scalbn(bv[2], -e)};
-  const S w2 = dot3(w, w), wn = std::sqrt(w2);
-  const S n = std::scalbn(wn, e);  // |r_v|, rounded once
-  const S b = std::atan2(n, m.s);
+  const V3<S> c = ideal(m);
+  const int er = std::ilogb(std::max({abs(raw[0]), abs(raw[1]), abs(raw[2]), abs(raw[3])}));
+  const int ev = std::ilogb(std::max({abs(raw[1]), abs(raw[2]), abs(raw[3])}));
+  const V3<S> w{std::scalbn(raw[1], -ev), std::scalbn(raw[2], -ev), std::scalbn(raw[3], -ev)};
+  S r2 = 0;
+  for (const S x : raw) r2 += std::scalbn(x, -er) * std::scalbn(x, -er);
+  const S w2 = dot3(w, w), wn = std::sqrt(w2), rn = std::sqrt(r2);
+  const S n = std::scalbn(wn / rn, ev - er);  // |raw_v| / |raw|, possibly subnormal: only a guess
+  const S b = std::atan2(std::scalbn(wn, ev - er), std::scalbn(raw[0], -er));
   const V3<S> axis{w[0] / wn, w[1] / wn, w[2] / wn};
   const S a = abs(m.s) >= n ? dot3(c, axis) / m.s : m.e0123 / n;
   const auto pp = runtime::perpendicular_times_norm2<S>({w[0], w[1], w[2], 0}, {c[0], c[1], c[2], 0});
-  const S k = b / (w2 * wn);  // (b / n) c_perp = scalbn(k pp, -e)
-  return {b * axis[0], b * axis[1], b * axis[2], a * axis[0] + std::scalbn(k * pp[0], -e),
-          a * axis[1] + std::scalbn(k * pp[1], -e), a * axis[2] + std::scalbn(k * pp[2], -e)};
+  const S k = b * rn / (w2 * wn);  // (b / n) c_perp = 2^(er - ev) k pp
+  return {b * axis[0], b * axis[1], b * axis[2], a * axis[0] + std::scalbn(k * pp[0], er - ev),
+          a * axis[1] + std::scalbn(k * pp[1], er - ev), a * axis[2] + std::scalbn(k * pp[2], er - ev)};
 }
 
 /// log of a unit motor with s > -1 (interpolation only takes it with s >= 0, b <= pi/2), the
 /// inverse of exp: with n = |Euclidean part| = sin b, b = atan2(n, s), rho = b / n (-> 1):
 ///   beta = rho (e23, e31, e12),   u = rho c - f(b) p rho^3 (e23, e31, e12)
 /// (from exp: k = u.beta = p rho, sinc(b) u = c - f k beta). n = 0: the log of the translator,
-/// beta = 0 and u = c. Past a quarter turn: log_past_quarter_turn.
-template <class S> Bivector<S> log(const Motor<S>& m) {
+/// beta = 0 and u = c. Past a quarter turn: log_past_quarter_turn, from `raw`, m's rotor part
+/// before it was normalised (m's own by default).
+template <class S> Bivector<S> log(const Motor<S>& m, std::array<S, 4> raw) {
   const V3<S> bv = euclid(m), c = ideal(m);
-  if (m.s < 0 && (bv[0] != 0 || bv[1] != 0 || bv[2] != 0)) return log_past_quarter_turn(m);
+  if (m.s < 0 && (raw[1] != 0 || raw[2] != 0 || raw[3] != 0)) return log_past_quarter_turn(m, raw);
   const S n = std::sqrt(dot3(bv, bv));
   const S b = std::atan2(n, m.s);
   const S rho = n > 0 ? b / n : S(1);
   const S g = coupling(b, n, m.s) * m.e0123 * rho * rho * rho;
   return {rho * bv[0], rho * bv[1], rho * bv[2], rho * c[0] - g * bv[0], rho * c[1] - g * bv[1], rho * c[2] - g * bv[2]};
 }
+template <class S> Bivector<S> log(const Motor<S>& m) { return log(m, {m.s, m.e23, m.e31, m.e12}); }
 
 template <class S> Bivector<S> operator*(S t, const Bivector<S>& B) {
   return {t * B.e23, t * B.e31, t * B.e12, t * B.e01, t * B.e02, t * B.e03};

@@ -155,7 +155,8 @@ struct MotorPga {
       else out = {pi / len * t[0], pi / len * t[1], pi / len * t[2], t[0] / 2, t[1] / 2, t[2] / 2};
       return Status::ok;
     }
-    const pga::Bivector<S> b = pga::log(m);
+    // The rotor part as given: normalising can leave its Euclidean part subnormal (EDGE-1).
+    const pga::Bivector<S> b = pga::log(m, std::array<S, 4>{d[3], -d[0], -d[1], -d[2]});
     out = {-b.e23, -b.e31, -b.e12, -b.e01, -b.e02, -b.e03};
     return Status::ok;
   }
