@@ -212,7 +212,8 @@ template <class S> Motor<S> exp(const Bivector<S>& B) {
 /// scales, beta = b n^, and the ideal part is a n^ + (b / n) c_perp: from exp, c = cos b a n^ +
 /// sinc(b) u_perp and p = a sin b, so a = c.n^ / s (|s| >= n) or p / n; c_perp without the
 /// subtraction (perpendicular_part.hpp).
-template <class S> [[gnu::noinline]] Bivector<S> log_past_quarter_turn(const Motor<S>& m, const std::array<S, 4>& raw) {
+template <class S>
+[[gnu::noinline]] Bivector<S> log_past_quarter_turn(const Motor<S>& m, const std::array<S, 4>& raw, const V3<S>& raw_c) {
   using std::abs;
   const V3<S> c = ideal(m);
   const int er = std::ilogb(std::max({abs(raw[0]), abs(raw[1]), abs(raw[2]), abs(raw[3])}));
@@ -225,28 +226,35 @@ template <class S> [[gnu::noinline]] Bivector<S> log_past_quarter_turn(const Mot
   const S b = std::atan2(std::scalbn(wn, ev - er), std::scalbn(raw[0], -er));
   const V3<S> axis{w[0] / wn, w[1] / wn, w[2] / wn};
   const S a = abs(m.s) >= n ? dot3(c, axis) / m.s : m.e0123 / n;
-  const auto pp = runtime::perpendicular_times_norm2<S>({w[0], w[1], w[2], 0}, {c[0], c[1], c[2], 0});
-  const S k = b * rn / (w2 * wn);  // (b / n) c_perp = 2^(er - ev) k pp
-  return {b * axis[0], b * axis[1], b * axis[2], a * axis[0] + std::scalbn(k * pp[0], er - ev),
-          a * axis[1] + std::scalbn(k * pp[1], er - ev), a * axis[2] + std::scalbn(k * pp[2], er - ev)};
+  // (b / n) c_perp = b (raw_c)_perp / |raw_v|: normalising scales c_perp by 1 / |raw| and leaves
+  // it otherwise alone (its projection runs along the rotor part), so read it off raw_c, whose
+  // normalised copy can be subnormal.
+  const S cmax = std::max({abs(raw_c[0]), abs(raw_c[1]), abs(raw_c[2])});
+  if (cmax == 0) return {b * axis[0], b * axis[1], b * axis[2], a * axis[0], a * axis[1], a * axis[2]};
+  const int ec = std::ilogb(cmax);
+  const auto pp = runtime::perpendicular_times_norm2<S>(
+      {w[0], w[1], w[2], 0}, {std::scalbn(raw_c[0], -ec), std::scalbn(raw_c[1], -ec), std::scalbn(raw_c[2], -ec), 0});
+  const S k = b / (w2 * wn);  // (b / n) c_perp = 2^(ec - ev) k pp
+  return {b * axis[0], b * axis[1], b * axis[2], a * axis[0] + std::scalbn(k * pp[0], ec - ev),
+          a * axis[1] + std::scalbn(k * pp[1], ec - ev), a * axis[2] + std::scalbn(k * pp[2], ec - ev)};
 }
 
 /// log of a unit motor with s > -1 (interpolation only takes it with s >= 0, b <= pi/2), the
 /// inverse of exp: with n = |Euclidean part| = sin b, b = atan2(n, s), rho = b / n (-> 1):
 ///   beta = rho (e23, e31, e12),   u = rho c - f(b) p rho^3 (e23, e31, e12)
 /// (from exp: k = u.beta = p rho, sinc(b) u = c - f k beta). n = 0: the log of the translator,
-/// beta = 0 and u = c. Past a quarter turn: log_past_quarter_turn, from `raw`, m's rotor part
-/// before it was normalised (m's own by default).
-template <class S> Bivector<S> log(const Motor<S>& m, std::array<S, 4> raw) {
+/// beta = 0 and u = c. Past a quarter turn: log_past_quarter_turn, from `raw` and `raw_c`, m's
+/// rotor part and ideal vector part before m was normalised (m's own by default).
+template <class S> Bivector<S> log(const Motor<S>& m, const std::array<S, 4>& raw, const V3<S>& raw_c) {
   const V3<S> bv = euclid(m), c = ideal(m);
-  if (m.s < 0 && (raw[1] != 0 || raw[2] != 0 || raw[3] != 0)) return log_past_quarter_turn(m, raw);
+  if (m.s < 0 && (raw[1] != 0 || raw[2] != 0 || raw[3] != 0)) return log_past_quarter_turn(m, raw, raw_c);
   const S n = std::sqrt(dot3(bv, bv));
   const S b = std::atan2(n, m.s);
   const S rho = n > 0 ? b / n : S(1);
   const S g = coupling(b, n, m.s) * m.e0123 * rho * rho * rho;
   return {rho * bv[0], rho * bv[1], rho * bv[2], rho * c[0] - g * bv[0], rho * c[1] - g * bv[1], rho * c[2] - g * bv[2]};
 }
-template <class S> Bivector<S> log(const Motor<S>& m) { return log(m, {m.s, m.e23, m.e31, m.e12}); }
+template <class S> Bivector<S> log(const Motor<S>& m) { return log(m, {m.s, m.e23, m.e31, m.e12}, ideal(m)); }
 
 template <class S> Bivector<S> operator*(S t, const Bivector<S>& B) {
   return {t * B.e23, t * B.e31, t * B.e12, t * B.e01, t * B.e02, t * B.e03};

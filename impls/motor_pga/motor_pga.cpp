@@ -146,17 +146,28 @@ struct MotorPga {
   /// t = 0.
   static Status dq_log(const rci::DualQuat<S>& d, std::array<S, 6>& out) {
     if (!valid_dq(d)) return Status::domain_error;
-    const Motor<S> m = unit_motor(d);
-    if (m.e23 == 0 && m.e31 == 0 && m.e12 == 0 && m.s < 0) {
-      const rci::Vec3<S> t = move_point(m, rci::Vec3<S>{S(0), S(0), S(0)});
-      const S len = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    if (d[0] == 0 && d[1] == 0 && d[2] == 0 && d[3] < 0) {
+      // The branch cut, read off the input (normalising first can underflow its parts): the
+      // rotor is -1 exactly and the translation t = 2 d_v / w, formed at d_v's and w's own
+      // scales; xi = (pi t / |t|, t / 2), +z for t = 0.
       const S pi = S(3.14159265358979323846264338327950288);
-      if (len == 0) out = {0, 0, pi, 0, 0, 0};
-      else out = {pi / len * t[0], pi / len * t[1], pi / len * t[2], t[0] / 2, t[1] / 2, t[2] / 2};
+      const S dv_max = std::max({std::abs(d[4]), std::abs(d[5]), std::abs(d[6])});
+      if (dv_max == 0) {
+        out = {0, 0, pi, 0, 0, 0};
+        return Status::ok;
+      }
+      const int ed = std::ilogb(dv_max), ew = std::ilogb(d[3]);
+      const std::array<S, 3> v{std::scalbn(d[4], -ed), std::scalbn(d[5], -ed), std::scalbn(d[6], -ed)};
+      const S w = std::scalbn(d[3], -ew), len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      for (int i = 0; i < 3; ++i) {
+        out[i] = -pi * v[i] / len;  // w < 0: t points against d_v
+        out[3 + i] = std::scalbn(v[i] / w, ed - ew);
+      }
       return Status::ok;
     }
-    // The rotor part as given: normalising can leave its Euclidean part subnormal (EDGE-1).
-    const pga::Bivector<S> b = pga::log(m, std::array<S, 4>{d[3], -d[0], -d[1], -d[2]});
+    const Motor<S> m = unit_motor(d);
+    // The rotor and ideal parts as given: normalising can leave them subnormal (EDGE-1).
+    const pga::Bivector<S> b = pga::log(m, std::array<S, 4>{d[3], -d[0], -d[1], -d[2]}, pga::V3<S>{-d[4], -d[5], -d[6]});
     out = {-b.e23, -b.e31, -b.e12, -b.e01, -b.e02, -b.e03};
     return Status::ok;
   }
