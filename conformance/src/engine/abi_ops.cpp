@@ -273,14 +273,14 @@ std::vector<AbiOp> build() {
 
 // ---- calling a table --------------------------------------------------------------------
 
-/// Calls (or probes) op through the slot the op list (abi_op_list.h) gives it. An appended struct
-/// is read only from a table whose abi_version is at least the one that added it (an older
-/// table's memory ends before it): with_slot sees to that.
+/// Calls op through the slot the op list (abi_op_list.h) gives it. An appended struct is read
+/// only from a table whose abi_version is at least the one that added it (an older table's memory
+/// ends before it): with_slot sees to that.
 template <class S>
 int dispatch(const rc_impl& table, const AbiOp& op, std::size_t n, std::size_t k, const std::vector<const void*>& in,
-             const std::vector<void*>& out, std::uint8_t* status, bool probe) {
+             const std::vector<void*>& out, std::uint8_t* status) {
   const OpInfo& info = op_info(op.id);
-  if (!probe && (in.size() != static_cast<std::size_t>(info.inputs) || out.size() != static_cast<std::size_t>(info.outputs)))
+  if (in.size() != static_cast<std::size_t>(info.inputs) || out.size() != static_cast<std::size_t>(info.outputs))
     throw std::logic_error("engine::call: " + op.name + " takes " + std::to_string(info.inputs) + " input and " +
                            std::to_string(info.outputs) + " output arrays");
   std::vector<const S*> ins;
@@ -288,19 +288,7 @@ int dispatch(const rc_impl& table, const AbiOp& op, std::size_t n, std::size_t k
   for (const void* p : in) ins.push_back(static_cast<const S*>(p));
   for (void* p : out) outs.push_back(static_cast<S*>(p));
   const SlotArgs<S> args{n, k, ins.data(), outs.data(), status};
-  return with_slot<S>(table, op.id, [&](auto fn) {
-    if (fn == nullptr) return -1;
-    return probe ? 0 : invoke_slot(fn, args);
-  });
-}
-
-int dispatch(const rc_impl& table, const std::string& name, std::size_t n, std::size_t k,
-             const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status, bool probe) {
-  const AbiOp* op = find_abi_op(name);
-  if (op == nullptr) return -1;
-  if (table.scalar == RC_SCALAR_FLOAT32) return dispatch<float>(table, *op, n, k, in, out, status, probe);
-  if (table.scalar == RC_SCALAR_FLOAT64) return dispatch<double>(table, *op, n, k, in, out, status, probe);
-  return -1;
+  return with_slot<S>(table, op.id, [&](auto fn) { return fn == nullptr ? -1 : invoke_slot(fn, args); });
 }
 
 }  // namespace
@@ -333,7 +321,11 @@ const AbiOp& judged_op(const std::string& clause, const std::string& op) {
 
 int call(const rc_impl& table, const std::string& op, std::size_t n, std::size_t k,
          const std::vector<const void*>& in, const std::vector<void*>& out, std::uint8_t* status) {
-  return dispatch(table, op, n, k, in, out, status, false);
+  const AbiOp* desc = find_abi_op(op);
+  if (desc == nullptr) return -1;
+  if (table.scalar == RC_SCALAR_FLOAT32) return dispatch<float>(table, *desc, n, k, in, out, status);
+  if (table.scalar == RC_SCALAR_FLOAT64) return dispatch<double>(table, *desc, n, k, in, out, status);
+  return -1;
 }
 
 Real block_norm(const std::vector<Real>& v, std::size_t from, std::size_t n) {
@@ -353,12 +345,8 @@ Real orthogonality_defect(const std::vector<Real>& m) {
 }
 
 bool supports(const rc_impl& table, const std::string& op) {
-  // Only the slot is inspected: probing must not run code of the implementation.
   const AbiOp* desc = find_abi_op(op);
-  if (desc == nullptr) return false;
-  const std::vector<const void*> in(desc->inputs.size(), nullptr);
-  const std::vector<void*> out(desc->outputs.size(), nullptr);
-  return dispatch(table, op, 0, 0, in, out, nullptr, true) == 0;
+  return desc != nullptr && has_op(table, desc->id);  // reads the slot only: runs no plugin code
 }
 
 }  // namespace rotorcert::engine
