@@ -21,6 +21,7 @@
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 #include <rotorcert/runtime/perpendicular_part.hpp>
+#include <rotorcert/runtime/scalar_real_part_log.hpp>
 #include <rotorcert/impl_table.hpp>
 
 namespace {
@@ -216,15 +217,20 @@ template <class S> Dual<S> screw_power(const Dual<S>& u, S t) {
   return {{rv.x, rv.y, rv.z, cs}, {dual_v.x, dual_v.y, dual_v.z, -t * hd * sn}};
 }
 
+/// The binary exponent of the largest |component| of a nonzero v, and v times 2^e exactly.
+template <class S> int own_exponent(const Vec<S>& v) {
+  using std::abs;
+  return std::ilogb(std::max({abs(v.x), abs(v.y), abs(v.z)}));
+}
+template <class S> Vec<S> scaled(const Vec<S>& v, int e) { return {std::scalbn(v.x, e), std::scalbn(v.y, e), std::scalbn(v.z, e)}; }
+
 /// |v| without overflow or underflow of the squares: scaled by the largest |component| (exact
 /// power of two), so a subnormal vector part keeps its direction.
 template <class S> S length(const Vec<S>& v) {
-  using std::abs;
   if (const S n2 = dot(v, v); runtime::is_ordinary_square(n2)) return std::sqrt(n2);
-  const S m = std::max({abs(v.x), abs(v.y), abs(v.z)});
-  if (m == 0) return 0;
-  const int e = std::ilogb(m);
-  const Vec<S> u{std::scalbn(v.x, -e), std::scalbn(v.y, -e), std::scalbn(v.z, -e)};
+  if (v.x == 0 && v.y == 0 && v.z == 0) return 0;
+  const int e = own_exponent(v);
+  const Vec<S> u = scaled(v, -e);
   return std::scalbn(std::sqrt(dot(u, u)), e);
 }
 
@@ -236,13 +242,6 @@ template <class S> Vec<S> direction(const Vec<S>& v, S len) {
   return {v.x / len, v.y / len, v.z / len};
 }
 
-/// The binary exponent of the largest |component| of a nonzero v, and v times 2^e exactly.
-template <class S> int own_exponent(const Vec<S>& v) {
-  using std::abs;
-  return std::ilogb(std::max({abs(v.x), abs(v.y), abs(v.z)}));
-}
-template <class S> Vec<S> scaled(const Vec<S>& v, int e) { return {std::scalbn(v.x, e), std::scalbn(v.y, e), std::scalbn(v.z, e)}; }
-
 /// A dual vector xi = xi_r + eps xi_d (DQ-8, DQ-9): the ABI's 6 scalars.
 template <class S> struct DualVec { Vec<S> r, d; };
 
@@ -252,20 +251,9 @@ template <class S> struct DualVec { Vec<S> r, d; };
 /// translation, +z for t = 0.
 template <class S> DualVec<S> log(const Dual<S>& sigma) {
   const Vec<S> rv = vec(sigma.r);
-  const S s = length(rv);  // |r_v| of the input: the angle and axis are invariant under scale
-  if (s == 0) {
-    // r = w exactly: t / 2 = d_v / w, formed with d_v and w at their own scales (a huge w would
-    // underflow d_v / |r| on the way); w < 0 is the branch cut, xi_r = pi t / |t|.
-    const Vec<S> dv = vec(sigma.d);
-    const S pi = S(3.14159265358979323846264338327950288);
-    if (dv.x == 0 && dv.y == 0 && dv.z == 0) return {{0, 0, sigma.r.w > 0 ? S(0) : pi}, {0, 0, 0}};
-    const int ed = own_exponent(dv), ew = std::ilogb(sigma.r.w);
-    const Vec<S> dv_own = scaled(dv, -ed);
-    const S w_own = std::scalbn(sigma.r.w, -ew);
-    const Vec<S> half_t = scaled((S(1) / w_own) * dv_own, ed - ew);
-    if (sigma.r.w > 0) return {{0, 0, 0}, half_t};
-    const Vec<S> t_dir = (S(-1) / std::sqrt(dot(dv_own, dv_own))) * dv_own;  // t / |t|, w < 0
-    return {pi * t_dir, half_t};
+  if (rv.x == 0 && rv.y == 0 && rv.z == 0) {
+    const auto xi = runtime::log_of_scalar_real_part<S>(sigma.r.w, {sigma.d.x, sigma.d.y, sigma.d.z});
+    return {{xi[0], xi[1], xi[2]}, {xi[3], xi[4], xi[5]}};
   }
   // Read off the input, not off DQ-4(sigma): where |r_v| << |r_w| the normalised vector part is
   // subnormal and has lost the axis (EDGE-1). With x = sigma at a common power-of-two scale and
@@ -277,7 +265,8 @@ template <class S> DualVec<S> log(const Dual<S>& sigma) {
   const int er = scale_exponent(sigma.r), ev = own_exponent(rv);
   const Quat<S> r_own = scaled(sigma.r, -er);
   const Vec<S> rv_own = scaled(rv, -ev);
-  const S nr = std::sqrt(dot(r_own, r_own)), len_own = std::sqrt(dot(rv_own, rv_own));  // |r|, |r_v| / 2^e
+  const S len2 = dot(rv_own, rv_own);
+  const S nr = std::sqrt(dot(r_own, r_own)), len_own = std::sqrt(len2);  // |r|, |r_v| / 2^e
   const S b = std::atan2(std::scalbn(len_own, ev - er), r_own.w);
   const Vec<S> n = (S(1) / len_own) * rv_own;
   const Dual<S> x = safely_scaled(sigma);
@@ -291,7 +280,6 @@ template <class S> DualVec<S> log(const Dual<S>& sigma) {
   // runtime/perpendicular_part.hpp on the exact r_v (scaled by a power of two), not the rounded n.
   const std::array<S, 4> pp =
       runtime::perpendicular_times_norm2<S>({rv_own.x, rv_own.y, rv_own.z, 0}, {dv_own.x, dv_own.y, dv_own.z, 0});
-  const S len2 = dot(rv_own, rv_own);
   const Vec<S> perp_own{pp[0] / len2, pp[1] / len2, pp[2] / len2};
   // (b / sin b) (d_v)_perp / |r|: up to pi/2 with sin b from b itself (b / sin b -> 1 exactly as b
   // -> 0, whatever b's rounding); beyond, with sin b = |r_v| / |r| (b is accurate near pi, sin b

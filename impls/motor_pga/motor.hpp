@@ -220,7 +220,10 @@ template <class S>
   const int ev = std::ilogb(std::max({abs(raw[1]), abs(raw[2]), abs(raw[3])}));
   const V3<S> w{std::scalbn(raw[1], -ev), std::scalbn(raw[2], -ev), std::scalbn(raw[3], -ev)};
   S r2 = 0;
-  for (const S x : raw) r2 += std::scalbn(x, -er) * std::scalbn(x, -er);
+  for (const S x : raw) {
+    const S x_own = std::scalbn(x, -er);
+    r2 += x_own * x_own;
+  }
   const S w2 = dot3(w, w), wn = std::sqrt(w2), rn = std::sqrt(r2);
   const S n = std::scalbn(wn / rn, ev - er);  // |raw_v| / |raw|, possibly subnormal: only a guess
   const S b = std::atan2(std::scalbn(wn, ev - er), std::scalbn(raw[0], -er));

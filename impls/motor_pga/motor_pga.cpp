@@ -17,6 +17,7 @@
 #include <span>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/scalar_real_part_log.hpp>
 #include <rotorcert/impl_table.hpp>
 
 #include "motor.hpp"
@@ -147,22 +148,8 @@ struct MotorPga {
   static Status dq_log(const rci::DualQuat<S>& d, std::array<S, 6>& out) {
     if (!valid_dq(d)) return Status::domain_error;
     if (d[0] == 0 && d[1] == 0 && d[2] == 0 && d[3] < 0) {
-      // The branch cut, read off the input (normalising first can underflow its parts): the
-      // rotor is -1 exactly and the translation t = 2 d_v / w, formed at d_v's and w's own
-      // scales; xi = (pi t / |t|, t / 2), +z for t = 0.
-      const S pi = S(3.14159265358979323846264338327950288);
-      const S dv_max = std::max({std::abs(d[4]), std::abs(d[5]), std::abs(d[6])});
-      if (dv_max == 0) {
-        out = {0, 0, pi, 0, 0, 0};
-        return Status::ok;
-      }
-      const int ed = std::ilogb(dv_max), ew = std::ilogb(d[3]);
-      const std::array<S, 3> v{std::scalbn(d[4], -ed), std::scalbn(d[5], -ed), std::scalbn(d[6], -ed)};
-      const S w = std::scalbn(d[3], -ew), len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-      for (int i = 0; i < 3; ++i) {
-        out[i] = -pi * v[i] / len;  // w < 0: t points against d_v
-        out[3 + i] = std::scalbn(v[i] / w, ed - ew);
-      }
+      // The branch cut, read off the input (normalising first can underflow its parts).
+      out = runtime::log_of_scalar_real_part<S>(d[3], {d[4], d[5], d[6]});
       return Status::ok;
     }
     const Motor<S> m = unit_motor(d);
