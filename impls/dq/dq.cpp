@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include <rotorcert/runtime/exact_sign.hpp>
@@ -156,10 +157,25 @@ template <class S> [[gnu::noinline, gnu::cold]] Quat<S> perpendicular_dual_part(
   return {f * p[0], f * p[1], f * p[2], f * p[3]};
 }
 
+/// DQ-4 below on s whose r2 = |r|^2 and d2 = |d|^2 are ordinary (d2 may be 0), where safely_scaled()
+/// is the identity, and whose projection does not cancel: the common case, inline, for the batch
+/// fast paths. Returns false, having written nothing, elsewhere.
+template <class S>
+[[gnu::always_inline]] inline bool normalized_ordinary(const Dual<S>& s, S r2, S d2, Dual<S>& out) {
+  if (!runtime::is_ordinary_square(r2) || !(d2 == 0 || runtime::is_ordinary_square(d2))) return false;
+  const S n = std::sqrt(r2);
+  const Quat<S> ru = s.r / n;
+  const S along = dot(ru, s.d);
+  if (runtime::projection_cancels(along, d2)) return false;
+  out = {ru, (s.d - along * ru) / n};
+  return true;
+}
+
 /// DQ-4: r' = r/|r|, d' = d/|r| - (r.d/|r|^3) r, written as d' = (d - (r'.d) r')/|r| on the
 /// safely scaled parts; where that subtraction would cancel (d mostly parallel to r), the form
 /// without it (runtime/perpendicular_part.hpp).
 template <class S> Dual<S> normalized(const Dual<S>& s) {
+  if (Dual<S> u; normalized_ordinary(s, dot(s.r, s.r), dot(s.d, s.d), u)) return u;
   const Dual<S> x = safely_scaled(s);
   const S n2 = dot(x.r, x.r), n = std::sqrt(n2);
   const Quat<S> ru = x.r / n;
@@ -332,6 +348,40 @@ Dual<S> dlb(std::size_t k, Real real, Unit unit, std::span<const S> w, S w_max) 
   return normalized(sum);
 }
 
+/// DQ-6 on an element of the batch (k influences of 8 scalars at d, k weights at w) whose input
+/// passes the cheap tests: every weight in [0, max], some > 0; every influence with |r|^2
+/// ordinary and |d|^2 ordinary or 0 (runtime/ordinary_range.hpp: then every component is
+/// finite, r != 0 and safely_scaled() is the identity); no DQ-4 projection that cancels. There
+/// it is dlb() above with the same operations in the same order, so the same bits, without the
+/// checks, copies and calls that dominate the cost on ordinary input. Returns false, having
+/// written nothing, where a test fails: the caller then takes the checked element path.
+template <class S>
+bool dlb_ordinary(std::size_t k, const S* d, const S* w, Dual<S>& out) {
+  S w_max = 0;
+  std::size_t p = k;
+  for (std::size_t i = 0; i < k; ++i) {
+    if (!(w[i] >= 0 && w[i] <= std::numeric_limits<S>::max())) return false;  // NaN, < 0, +inf (EDGE-9)
+    if (w[i] > w_max) w_max = w[i];
+    if (p == k && w[i] > 0) p = i;
+  }
+  if (p == k) return false;
+  const Quat<S> pivot{d[8 * p], d[8 * p + 1], d[8 * p + 2], d[8 * p + 3]};
+  Dual<S> sum{{0, 0, 0, 0}, {0, 0, 0, 0}};
+  for (std::size_t i = 0; i < k; ++i) {
+    const S* x = d + 8 * i;
+    const Dual<S> s{{x[0], x[1], x[2], x[3]}, {x[4], x[5], x[6], x[7]}};
+    const Quat<S>& r = s.r;
+    Dual<S> u;
+    if (!normalized_ordinary(s, dot(s.r, s.r), dot(s.d, s.d), u)) return false;
+    const int side = runtime::filtered_dot_sign<S, 4>({r.x, r.y, r.z, r.w}, {pivot.x, pivot.y, pivot.z, pivot.w});
+    if (side == 2) return false;  // only the exact sum can tell (EDGE-3)
+    const S f = side < 0 ? -(w[i] / w_max) : w[i] / w_max;
+    sum = {sum.r + f * u.r, sum.d + f * u.d};
+  }
+  if (!normalized_ordinary(sum, dot(sum.r, sum.r), dot(sum.d, sum.d), out)) out = normalized(sum);
+  return true;
+}
+
 /// Validation shared by SKIN-1 and SKIN-2 (EDGE-6, EDGE-7, EDGE-9): returns the largest weight,
 /// 0 when the input is outside the domain.
 template <class S>
@@ -496,6 +546,24 @@ struct Dq {
         d.size(), [&](std::size_t i) { return load(d[i]).r; }, [&](std::size_t i) { return normalized(load(d[i])); }, w,
         w_max));
     return Status::ok;
+  }
+
+  /// The batch of dq_blend: each element by dlb_ordinary() where its cheap tests pass (the same
+  /// bits), else by the checked element function above.
+  static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out, std::uint8_t* status) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const S* di = d + 8 * k * i;
+      const S* wi = w + k * i;
+      Dual<S> r;
+      if (k > 0 && dlb_ordinary(k, di, wi, r)) [[likely]] {
+        const rci::DualQuat<S> o = store(r);
+        std::copy(o.begin(), o.end(), out + 8 * i);
+        status[i] = RC_OK;
+      } else {
+        rci::detail::blend<&Dq::dq_blend, S, 8, 8>(1, k, di, wi, out + 8 * i, status + i);
+      }
+    }
+    return 0;
   }
 
   /// AXIS-1 as a dual quaternion: T(c) R T(-c) = (q, 1/2 (c q - q c)), then DQ-3. Its

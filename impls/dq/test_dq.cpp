@@ -240,6 +240,15 @@ TEST(Dq, BlendDoesNotFlipOnExactlyZeroDot) {
   });
 }
 
+TEST(Dq, BlendFastAndCheckedPathsAgree) {
+  RC_CLAUSE("DQ-6");
+  RC_CLAUSE("EDGE-5");
+  both([](auto tag) {
+    using S = decltype(tag);
+    rigid_laws::blend_fast_and_checked_paths_agree<S>(ops<S>());
+  });
+}
+
 // ---- smoke check against the reference -------------------------------------------------------------
 
 TEST(Dq, SmokeAgainstReference) {

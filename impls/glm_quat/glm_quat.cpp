@@ -248,9 +248,7 @@ struct GlmQuat {
   // DLB with GLM operators (glm::lerp(dualquat) is the two-influence case of the same rule).
   static Status dq_blend(std::span<const DualQuat<S>> d, std::span<const S> w, DualQuat<S>& out) {
     if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
-    std::vector<glm::tdualquat<S>> g;
-    for (const DualQuat<S>& di : d) g.push_back(to_glm(di));
-    out = from_glm(dlb(g, w));
+    out = from_glm(dlb(d.size(), [&](std::size_t i) { return to_glm(d[i]); }, w));
     return Status::ok;
   }
   static Status rotate_about_axis(const Vec3<S>& c, const Vec3<S>& u, const S& angle, const Vec3<S>& p,
@@ -281,19 +279,21 @@ struct GlmQuat {
   static Status skin_dual_quaternion(std::span<const Quat<S>> q, std::span<const Vec3<S>> t, std::span<const S> w,
                                      const Vec3<S>& v, Vec3<S>& out) {
     if (!rotorcert::impl::usable_weights(w)) return Status::domain_error;  // the glue's blend rule (EDGE-9)
-    std::vector<glm::tdualquat<S>> d;
-    for (std::size_t i = 0; i < q.size(); ++i) d.emplace_back(to_glm(q[i]), to_glm(t[i]));
-    out = from_glm(dlb(d, w) * to_glm(v));
+    out = from_glm(dlb(q.size(), [&](std::size_t i) { return glm::tdualquat<S>(to_glm(q[i]), to_glm(t[i])); }, w) *
+                   to_glm(v));
     return Status::ok;
   }
 
  private:
-  static glm::tdualquat<S> dlb(const std::vector<glm::tdualquat<S>>& d, std::span<const S> w) {
+  /// The k influences come from `influence(i)`, made on the fly: no heap per element.
+  template <class Influence>
+  static glm::tdualquat<S> dlb(std::size_t k, Influence influence, std::span<const S> w) {
     glm::tdualquat<S> sum(zero_quat<S>(), zero_quat<S>());
-    const std::size_t p = rotorcert::impl::first_positive_weight(w);
-    for (std::size_t i = 0; i < d.size(); ++i) {
-      const S wi = glm::dot(d[i].real, d[p].real) < S(0) ? -w[i] : w[i];
-      sum = sum + wi * d[i];
+    const glm::tdualquat<S> pivot = influence(rotorcert::impl::first_positive_weight(w));
+    for (std::size_t i = 0; i < k; ++i) {
+      const glm::tdualquat<S> di = influence(i);
+      const S wi = glm::dot(di.real, pivot.real) < S(0) ? -w[i] : w[i];
+      sum = sum + wi * di;
     }
     return glm::normalize(sum);
   }

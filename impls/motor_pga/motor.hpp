@@ -122,10 +122,35 @@ template <class S>
 /// are ordinary (runtime/ordinary_range.hpp: then the scale would change nothing but underflows
 /// far below the unit roundoff). Where the subtraction of k b would cancel, the ideal part comes from
 /// runtime/perpendicular_part.hpp instead. Precondition: finite, rotor part nonzero.
+template <class S> Motor<S> normalized(const Motor<S>& m);
+
+/// The rotor part's n^2 and the ideal part's squares of M.
+template <class S> S rotor_norm2(const Motor<S>& m) { return m.s * m.s + m.e23 * m.e23 + m.e31 * m.e31 + m.e12 * m.e12; }
+template <class S> S ideal_norm2(const Motor<S>& m) {
+  return m.e01 * m.e01 + m.e02 * m.e02 + m.e03 * m.e03 + m.e0123 * m.e0123;
+}
+
+/// normalized(m) below where n2 = rotor_norm2(m) and i2 = ideal_norm2(m) are ordinary (i2 may be 0)
+/// and the subtraction does not cancel: the same operations in the same order, so the same bits,
+/// inline for the batch fast paths. Returns false, having written nothing, elsewhere.
+template <class S>
+[[gnu::always_inline]] inline bool normalized_ordinary(const Motor<S>& m, S n2, S i2, Motor<S>& out) {
+  if (!runtime::is_ordinary_square(n2) || !(i2 == 0 || runtime::is_ordinary_square(i2))) return false;
+  const V3<S> b{m.e23, m.e31, m.e12}, c{m.e01, m.e02, m.e03};
+  const S n = std::sqrt(m.s * m.s + dot3(b, b));
+  const S su = m.s / n;
+  const V3<S> bu{b[0] / n, b[1] / n, b[2] / n};
+  const S k = dot3(bu, c) - su * m.e0123;
+  if (runtime::projection_cancels(k, i2)) return false;
+  out = motor(su, bu, V3<S>{(c[0] - k * bu[0]) / n, (c[1] - k * bu[1]) / n, (c[2] - k * bu[2]) / n},
+              (m.e0123 + k * su) / n);
+  return true;
+}
+
 template <class S> Motor<S> normalized(const Motor<S>& m) {
   using std::abs;
-  const S n2 = m.s * m.s + m.e23 * m.e23 + m.e31 * m.e31 + m.e12 * m.e12;
-  const S i2 = m.e01 * m.e01 + m.e02 * m.e02 + m.e03 * m.e03 + m.e0123 * m.e0123;
+  const S n2 = rotor_norm2(m);
+  const S i2 = ideal_norm2(m);
   const bool ordinary = runtime::is_ordinary_square(n2) && (i2 == 0 || runtime::is_ordinary_square(i2));
   const int e = ordinary ? 0 : -std::ilogb(std::max({abs(m.s), abs(m.e23), abs(m.e31), abs(m.e12)}));
   const auto scaled = [&](S x) { return ordinary ? x : std::scalbn(x, e); };

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include <rotorcert/runtime/exact_sign.hpp>
@@ -107,6 +108,40 @@ Motor<S> blend(std::size_t k, Raw raw, Unit unit_influence, std::span<const S> w
            sum.e01 + f * m.e01, sum.e02 + f * m.e02, sum.e03 + f * m.e03, sum.e0123 + f * m.e0123};
   }
   return pga::normalized(sum);
+}
+
+/// MOTOR-5 on an element of the batch (k influences of 8 ABI scalars at d, k weights at w) whose
+/// input passes the cheap tests: every weight in [0, max], some > 0; every influence with its
+/// rotor part's n^2 ordinary and its ideal part's squares ordinary or 0 (then every coefficient is
+/// finite and the rotor part nonzero); no normalisation whose subtraction cancels; every
+/// hemisphere sign decided by the filter of runtime/exact_sign.hpp. There it is blend() above with
+/// the same operations in the same order, so the same bits, without the checks, copies and calls.
+/// Returns false, having written nothing, where a test fails: the caller takes the checked path.
+template <class S>
+bool blend_ordinary(std::size_t k, const S* d, const S* w, Motor<S>& out) {
+  S w_max = 0;
+  std::size_t p = k;
+  for (std::size_t i = 0; i < k; ++i) {
+    if (!(w[i] >= 0 && w[i] <= std::numeric_limits<S>::max())) return false;  // NaN, < 0, +inf (EDGE-9)
+    if (w[i] > w_max) w_max = w[i];
+    if (p == k && w[i] > 0) p = i;
+  }
+  if (p == k) return false;
+  const std::array<S, 4> pivot{d[8 * p + 3], -d[8 * p], -d[8 * p + 1], -d[8 * p + 2]};  // (s, e23, e31, e12)
+  Motor<S> sum{0, 0, 0, 0, 0, 0, 0, 0};
+  for (std::size_t i = 0; i < k; ++i) {
+    const S* x = d + 8 * i;
+    const Motor<S> raw{x[3], -x[0], -x[1], -x[2], -x[4], -x[5], -x[6], -x[7]};  // MOTOR-1
+    Motor<S> m;
+    if (!pga::normalized_ordinary(raw, pga::rotor_norm2(raw), pga::ideal_norm2(raw), m)) return false;
+    const int side = runtime::filtered_dot_sign<S, 4>({raw.s, raw.e23, raw.e31, raw.e12}, pivot);
+    if (side == 2) return false;  // only the exact sum can tell (EDGE-3)
+    const S f = side < 0 ? -(w[i] / w_max) : w[i] / w_max;
+    sum = {sum.s + f * m.s,     sum.e23 + f * m.e23, sum.e31 + f * m.e31, sum.e12 + f * m.e12,
+           sum.e01 + f * m.e01, sum.e02 + f * m.e02, sum.e03 + f * m.e03, sum.e0123 + f * m.e0123};
+  }
+  if (!pga::normalized_ordinary(sum, pga::rotor_norm2(sum), pga::ideal_norm2(sum), out)) out = pga::normalized(sum);
+  return true;
 }
 
 template <class S>
@@ -237,6 +272,24 @@ struct MotorPga {
         d.size(), [&](std::size_t i) { return pga::from_dual_quaternion(d[i]); },
         [&](std::size_t i) { return unit_motor(d[i]); }, w, w_max));
     return Status::ok;
+  }
+
+  /// The batch of dq_blend: each element by blend_ordinary() where its cheap tests pass (the same
+  /// bits), else by the checked element function above.
+  static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out, std::uint8_t* status) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const S* di = d + 8 * k * i;
+      const S* wi = w + k * i;
+      Motor<S> m;
+      if (k > 0 && blend_ordinary(k, di, wi, m)) [[likely]] {
+        const rci::DualQuat<S> o = pga::to_dual_quaternion(m);
+        std::copy(o.begin(), o.end(), out + 8 * i);
+        status[i] = RC_OK;
+      } else {
+        rci::detail::blend<&MotorPga::dq_blend, S, 8, 8>(1, k, di, wi, out + 8 * i, status + i);
+      }
+    }
+    return 0;
   }
 
   /// AXIS-1: the motor T_c R ~T_c, R = cos(angle/2) - sin(angle/2) (u1 e23 + u2 e31 + u3 e12)

@@ -268,6 +268,15 @@ TEST(MotorPga, BlendDoesNotFlipOnExactlyZeroDot) {
   });
 }
 
+TEST(MotorPga, BlendFastAndCheckedPathsAgree) {
+  RC_CLAUSE("DQ-6");
+  RC_CLAUSE("EDGE-5");
+  both([](auto tag) {
+    using S = decltype(tag);
+    rigid_laws::blend_fast_and_checked_paths_agree<S>(ops<S>());
+  });
+}
+
 TEST(MotorPga, SmokeAgainstReference) {
   RC_CLAUSE("DQ-1");
   RC_CLAUSE("DQ-2");

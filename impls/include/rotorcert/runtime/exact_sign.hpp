@@ -97,8 +97,11 @@ int exact_dot_sign_wide(const std::array<double, N>& a, const std::array<double,
 /// product loses at most half the smallest subnormal, so |dot - a.b| <= N u s + N denorm_min / 2
 /// with s the sum of |a_i b_i|; twice that is the bound. Where s overflows or the rounded dot is
 /// within the bound, the exact path decides.
+///
+/// filtered_dot_sign() is the filter alone (inline, a few operations): it returns 2 where only the
+/// exact path can decide, so that a caller's fast path can leave those inputs to its slow path.
 template <class S, std::size_t N>
-int exact_dot_sign(const std::array<S, N>& a, const std::array<S, N>& b) {
+inline int filtered_dot_sign(const std::array<S, N>& a, const std::array<S, N>& b) {
   static_assert(std::is_same_v<S, float> || std::is_same_v<S, double>, "exact_dot_sign: float or double");
   S dot = 0, size = 0;
   for (std::size_t i = 0; i < N; ++i) {
@@ -112,6 +115,12 @@ int exact_dot_sign(const std::array<S, N>& a, const std::array<S, N>& b) {
     if (dot > bound) return 1;
     if (dot < -bound) return -1;
   }
+  return 2;
+}
+
+template <class S, std::size_t N>
+int exact_dot_sign(const std::array<S, N>& a, const std::array<S, N>& b) {
+  if (const int s = filtered_dot_sign(a, b); s != 2) return s;
   return detail::exact_dot_sign_wide(a, b);
 }
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -290,6 +291,55 @@ template <class S> void blend_does_not_flip_on_exactly_zero_dot(const Ops<S>& op
     const ref::Quaternion<Real> no_flip{a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
     EXPECT_LE((ref::clause::METRIC_1_rotation_distance(rd(out).real, no_flip) / eps<S>()).toDouble(), strict("eps32"));
   }
+}
+
+/// DQ-6, EDGE-5: the blend of influences scaled by an exact power of two 2^E is the blend of the
+/// influences as given, bit for bit, where neither scale over- or underflows: each influence
+/// stands for its DQ-4 normalisation, and every step of DLB (normalise, weigh, sum, normalise) is
+/// homogeneous, so that only rounding could tell the scales apart, and power-of-two scales round
+/// alike. E is chosen to put |r|^2 outside the ordinary range (runtime/ordinary_range.hpp) in
+/// both directions, so one element of each call takes a table's fast path for ordinary input and
+/// the other two its checked path (the batch mixes them), and any difference between the two
+/// paths' arithmetic shows as a bit.
+template <class S> void blend_fast_and_checked_paths_agree(const Ops<S>& ops) {
+  constexpr int E = std::is_same_v<S, float> ? 40 : 300;  // |r|^2 ~ 2^(+-2E): beyond 2^(+-emax/2)
+  LawRng rng(7);
+  int checked = 0;
+  for (int i = 0; i < 300; ++i) {
+    const std::size_t k = 1 + i % 5;
+    std::vector<D<S>> ds(3 * k);
+    std::vector<S> w(3 * k);
+    bool representable = true;
+    for (std::size_t j = 0; j < k; ++j) {
+      D<S> d = rng.rigid<S>(ops);
+      const S size = S(rng.uniform(0.25, 4));  // non-unit influences too (EDGE-5)
+      for (S& c : d) {
+        c *= size;
+        representable = representable && (c == 0 || std::abs(c) > std::ldexp(std::numeric_limits<S>::min(), E + 8));
+      }
+      // Weights with zeros and -0 among them, at least one positive.
+      const S wj = (i + j) % 7 == 3 ? S(j % 2 ? -0.0 : 0.0) : S(rng.uniform(0, 2));
+      for (std::size_t c = 0; c < 8; ++c) {
+        ds[j][c] = d[c];
+        ds[k + j][c] = std::ldexp(d[c], E);
+        ds[2 * k + j][c] = std::ldexp(d[c], -E);
+      }
+      w[j] = w[k + j] = w[2 * k + j] = wj;
+    }
+    if (!representable || !(*std::max_element(w.begin(), w.begin() + k) > 0)) continue;
+    std::array<D<S>, 3> out;
+    std::array<std::uint8_t, 3> st{9, 9, 9};
+    ops.dq_blend(3, k, ds.front().data(), w.data(), out.front().data(), st.data());
+    ASSERT_EQ(st[0], RC_OK);
+    ASSERT_EQ(st[1], RC_OK);
+    ASSERT_EQ(st[2], RC_OK);
+    for (std::size_t c = 0; c < 8; ++c) {
+      EXPECT_EQ(out[1][c], out[0][c]) << "k=" << k << " case " << i << " component " << c << ": scaled by 2^" << E;
+      EXPECT_EQ(out[2][c], out[0][c]) << "k=" << k << " case " << i << " component " << c << ": scaled by 2^-" << E;
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 200);
 }
 
 }  // namespace rotorcert::testing::rigid_laws
