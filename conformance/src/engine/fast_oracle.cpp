@@ -60,11 +60,12 @@ FastReference pair(const ref::Result<ref::RotationTranslation<Bounded>>& r) {
 
 using FastFn = std::function<FastReference(const BoundedValues& in, std::size_t k)>;
 
-/// The closed-form ops: the same clause templates as abi_ops.cpp's MPFR lambdas. Not here:
-/// from_matrix (an iterative eigenvector), sqrt and dq_to_rotation_translation (engine-side
-/// references), dq_log and dq_exp, and rotate_about_axis, whose reference takes exact-zero
-/// branches (the PGA sandwich) that a bound cannot settle: the fast level decided under a quarter
-/// of its cases.
+/// The closed-form ops: the same clause templates as abi_ops.cpp's MPFR lambdas (DQ-8's and
+/// DQ-9's branches at |r_v| = 0 and b = 0 are decided wherever the bound keeps away from 0, every
+/// case the suite generates: conformance_test_fast_oracle). Not here: from_matrix (an iterative
+/// eigenvector), sqrt (an engine-side reference), and rotate_about_axis, whose reference takes
+/// exact-zero branches (the PGA sandwich) that a bound cannot settle: the fast level decided under
+/// a quarter of its cases.
 const std::map<std::string, FastFn>& fast_ops() {
   static const std::map<std::string, FastFn> ops = {
       {"normalize", [](const BoundedValues& in, std::size_t) { return one(clause::NORM_1_normalize(quat(in[0]))); }},
@@ -154,6 +155,27 @@ const std::map<std::string, FastFn>& fast_ops() {
        }},
       {"rigid_inverse",
        [](const BoundedValues& in, std::size_t) { return pair(clause::RIGID_3_inverse(quat(in[0]), vec3(in[1]))); }},
+      {"dq_to_rotation_translation",
+       [](const BoundedValues& in, std::size_t) {
+         const BDQ sigma = dq(in[0]);
+         const auto unit = clause::DQ_4_normalize(sigma);
+         const auto shift = clause::DQ_1_translation(sigma);
+         const bool ok = unit.status == ref::Status::ok && shift.status == ref::Status::ok;
+         return FastReference{ok ? ref::Status::ok : ref::Status::domain_error,
+                              {flat(unit.value.real), flat(shift.value)}};
+       }},
+      {"dq_log",
+       [](const BoundedValues& in, std::size_t) {
+         const auto r = clause::DQ_8_log(dq(in[0]));
+         BoundedArray xi = flat(r.value.real);
+         for (const Bounded& x : flat(r.value.dual)) xi.push_back(x);
+         return FastReference{r.status, {xi}};
+       }},
+      {"dq_exp",
+       [](const BoundedValues& in, std::size_t) {
+         const BV3 r{in[0][0], in[0][1], in[0][2]}, d{in[0][3], in[0][4], in[0][5]};
+         return one(clause::DQ_9_exp(ref::DualVector<Bounded>{r, d}));
+       }},
   };
   return ops;
 }
