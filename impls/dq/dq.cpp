@@ -18,12 +18,15 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 #include <rotorcert/runtime/perpendicular_part.hpp>
 #include <rotorcert/runtime/scalar_real_part_log.hpp>
 #include <rotorcert/impl_table.hpp>
+
+#include "dlb_lanes.hpp"
 
 namespace {
 
@@ -398,6 +401,8 @@ S skin_input_ok(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t
 template <class S>
 struct Dq {
   using Scalar = S;
+  /// The most influences a batched binary32 blend runs in SIMD lanes (the suite uses n <= 8: 8.3).
+  static constexpr std::size_t kLaneInfluences = 8;
   static constexpr const char* name = "dq";
   static constexpr const char* version = "0.1.0";
   static constexpr const char* description =
@@ -469,6 +474,45 @@ struct Dq {
     if (!valid(load(d)) || !finite(load(p))) return Status::domain_error;
     out = store(apply_point(load(d), load(p)));
     return Status::ok;
+  }
+
+  /// The batch of dq_apply_point: binary32 elements in SIMD lanes (dlb_lanes.hpp: the same bits),
+  /// blocks of 16, then the rest in blocks of 4 padded with copies of its last element; a lane that
+  /// is not ok, and every binary64 element, by the checked function above.
+  static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out, std::uint8_t* status) {
+    using Checked = rci::detail::Elementwise<&Dq::dq_apply_point, decltype(&Dq::dq_apply_point)>;
+    if constexpr (std::is_same_v<S, float>) {
+      const auto finish = [&](const auto& lanes, std::size_t i, std::size_t m) {
+        for (std::size_t l = 0; l < m; ++l) {
+          if (!lanes.ok[l]) [[unlikely]] {
+            Checked::run(1, d + 8 * (i + l), p + 3 * (i + l), out + 3 * (i + l), status + i + l);
+            continue;
+          }
+          for (std::size_t c = 0; c < 3; ++c) out[3 * (i + l) + c] = lanes.out[c][l];
+          status[i + l] = RC_OK;
+        }
+      };
+      std::size_t i = 0;
+      rotorcert::dq_lanes::ApplyPointLanes<S, 16> wide;
+      for (; i + 16 <= n; i += 16) {
+        wide.run(d + 8 * i, p + 3 * i);
+        finish(wide, i, 16);
+      }
+      rotorcert::dq_lanes::ApplyPointLanes<S, 4> narrow;
+      S dp[4 * 8], pp[4 * 3];
+      for (; i < n; i += 4) {
+        const std::size_t m = std::min<std::size_t>(4, n - i);
+        for (std::size_t l = 0; l < 4; ++l) {
+          const std::size_t e = i + std::min(l, m - 1);
+          std::copy(d + 8 * e, d + 8 * (e + 1), dp + 8 * l);
+          std::copy(p + 3 * e, p + 3 * (e + 1), pp + 3 * l);
+        }
+        narrow.run(dp, pp);
+        finish(narrow, i, m);
+      }
+      return 0;
+    }
+    return Checked::run(n, d, p, out, status);
   }
 
   /// DQ-7 (ABI version 3): DQ-4, then q = r' and t = 2 vec(d' r'*) (DQ-1 read backwards).
@@ -548,19 +592,57 @@ struct Dq {
     return Status::ok;
   }
 
-  /// The batch of dq_blend: each element by dlb_ordinary() where its cheap tests pass (the same
-  /// bits), else by the checked element function above.
+  /// The batch of dq_blend. binary32 (k <= kLaneInfluences): every element in SIMD lanes
+  /// (dlb_lanes.hpp: the same bits as the checked path), blocks of 16, then the rest in blocks of 4
+  /// padded with copies of its last element, so that short batches (the fuzzers' 1..8) run the
+  /// same lane code as long ones; a lane that is not ok goes to the checked element function.
+  /// binary64 (GCC 12 does not vectorise its lanes for baseline x86-64) and more influences:
+  /// dlb_ordinary() per element, the same bits too, else the checked function.
   static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out, std::uint8_t* status) {
+    const auto checked = [&](std::size_t e) {
+      rci::detail::blend<&Dq::dq_blend, S, 8, 8>(1, k, d + 8 * k * e, w + k * e, out + 8 * e, status + e);
+    };
+    if constexpr (std::is_same_v<S, float>) {
+      if (k > 0 && k <= kLaneInfluences) {
+        const auto finish = [&](const auto& lanes, std::size_t i, std::size_t m) {
+          for (std::size_t l = 0; l < m; ++l) {
+            if (!lanes.ok[l]) [[unlikely]] {
+              checked(i + l);
+              continue;
+            }
+            for (std::size_t c = 0; c < 8; ++c) out[8 * (i + l) + c] = lanes.out[c][l];
+            status[i + l] = RC_OK;
+          }
+        };
+        std::size_t i = 0;
+        rotorcert::dq_lanes::DlbLanes<S, 16> wide;
+        for (; i + 16 <= n; i += 16) {
+          wide.run(k, d + 8 * k * i, w + k * i);
+          finish(wide, i, 16);
+        }
+        rotorcert::dq_lanes::DlbLanes<S, 4> narrow;
+        S dp[4 * 8 * kLaneInfluences], wp[4 * kLaneInfluences];
+        for (; i < n; i += 4) {
+          const std::size_t m = std::min<std::size_t>(4, n - i);
+          for (std::size_t l = 0; l < 4; ++l) {
+            const std::size_t e = i + std::min(l, m - 1);
+            std::copy(d + 8 * k * e, d + 8 * k * (e + 1), dp + 8 * k * l);
+            std::copy(w + k * e, w + k * (e + 1), wp + k * l);
+          }
+          narrow.run(k, dp, wp);
+          finish(narrow, i, m);
+        }
+        return 0;
+      }
+    }
     for (std::size_t i = 0; i < n; ++i) {
-      const S* di = d + 8 * k * i;
-      const S* wi = w + k * i;
       Dual<S> r;
-      if (k > 0 && dlb_ordinary(k, di, wi, r)) [[likely]] {
+      if (k > 0 && dlb_ordinary(k, d + 8 * k * i, w + k * i, r)) [[likely]] {
         const rci::DualQuat<S> o = store(r);
         std::copy(o.begin(), o.end(), out + 8 * i);
         status[i] = RC_OK;
       } else {
-        rci::detail::blend<&Dq::dq_blend, S, 8, 8>(1, k, di, wi, out + 8 * i, status + i);
+        checked(i);
       }
     }
     return 0;

@@ -240,6 +240,16 @@ TEST(Dq, BlendDoesNotFlipOnExactlyZeroDot) {
   });
 }
 
+TEST(Dq, ApplyPointFastAndCheckedPathsAgree) {
+  RC_CLAUSE("DQ-3");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-7");
+  both([](auto tag) {
+    using S = decltype(tag);
+    rigid_laws::apply_point_fast_and_checked_paths_agree<S>(ops<S>());
+  });
+}
+
 TEST(Dq, BlendFastAndCheckedPathsAgree) {
   RC_CLAUSE("DQ-6");
   RC_CLAUSE("EDGE-5");

@@ -16,12 +16,14 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/scalar_real_part_log.hpp>
 #include <rotorcert/impl_table.hpp>
 
 #include "motor.hpp"
+#include "motor_lanes.hpp"
 
 namespace {
 
@@ -147,6 +149,8 @@ bool blend_ordinary(std::size_t k, const S* d, const S* w, Motor<S>& out) {
 template <class S>
 struct MotorPga {
   using Scalar = S;
+  /// The most influences a batched binary32 blend runs in SIMD lanes (the suite uses n <= 8: 8.3).
+  static constexpr std::size_t kLaneInfluences = 8;
   static constexpr const char* name = "motor_pga";
   static constexpr const char* version = "0.1.0";
   static constexpr const char* description =
@@ -247,6 +251,45 @@ struct MotorPga {
     return Status::ok;
   }
 
+  /// The batch of dq_apply_point: binary32 elements in SIMD lanes (motor_lanes.hpp: the same
+  /// bits), blocks of 16, then blocks of 4 padded with copies of the last element; a lane that is
+  /// not ok, and every binary64 element, by the checked function above.
+  static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out, std::uint8_t* status) {
+    using Checked = rci::detail::Elementwise<&MotorPga::dq_apply_point, decltype(&MotorPga::dq_apply_point)>;
+    if constexpr (std::is_same_v<S, float>) {
+      const auto finish = [&](const auto& lanes, std::size_t i, std::size_t m) {
+        for (std::size_t l = 0; l < m; ++l) {
+          if (!lanes.ok[l]) [[unlikely]] {
+            Checked::run(1, d + 8 * (i + l), p + 3 * (i + l), out + 3 * (i + l), status + i + l);
+            continue;
+          }
+          for (std::size_t c = 0; c < 3; ++c) out[3 * (i + l) + c] = lanes.out[c][l];
+          status[i + l] = RC_OK;
+        }
+      };
+      std::size_t i = 0;
+      rotorcert::motor_lanes::ApplyPointLanes<S, 16> wide;
+      for (; i + 16 <= n; i += 16) {
+        wide.run(d + 8 * i, p + 3 * i);
+        finish(wide, i, 16);
+      }
+      rotorcert::motor_lanes::ApplyPointLanes<S, 4> narrow;
+      S dp[4 * 8], pp[4 * 3];
+      for (; i < n; i += 4) {
+        const std::size_t m = std::min<std::size_t>(4, n - i);
+        for (std::size_t l = 0; l < 4; ++l) {
+          const std::size_t e = i + std::min(l, m - 1);
+          std::copy(d + 8 * e, d + 8 * (e + 1), dp + 8 * l);
+          std::copy(p + 3 * e, p + 3 * (e + 1), pp + 3 * l);
+        }
+        narrow.run(dp, pp);
+        finish(narrow, i, m);
+      }
+      return 0;
+    }
+    return Checked::run(n, d, p, out, status);
+  }
+
   static Status dq_normalize(const rci::DualQuat<S>& d, rci::DualQuat<S>& out) {
     if (!valid_dq(d)) return Status::domain_error;
     out = pga::to_dual_quaternion(unit_motor(d));
@@ -274,20 +317,56 @@ struct MotorPga {
     return Status::ok;
   }
 
-  /// The batch of dq_blend: each element by blend_ordinary() where its cheap tests pass (the same
-  /// bits), else by the checked element function above.
+  /// The batch of dq_blend, as dq's (dq.cpp): binary32 with k <= kLaneInfluences in SIMD lanes
+  /// (motor_lanes.hpp: the same bits as the checked path), blocks of 16, then blocks of 4 padded
+  /// with copies of the last element; else blend_ordinary() per element; a lane or element that
+  /// fails its cheap tests by the checked element function.
   static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out, std::uint8_t* status) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const S* di = d + 8 * k * i;
-      const S* wi = w + k * i;
-      Motor<S> m;
-      if (k > 0 && blend_ordinary(k, di, wi, m)) [[likely]] {
-        const rci::DualQuat<S> o = pga::to_dual_quaternion(m);
-        std::copy(o.begin(), o.end(), out + 8 * i);
-        status[i] = RC_OK;
-      } else {
-        rci::detail::blend<&MotorPga::dq_blend, S, 8, 8>(1, k, di, wi, out + 8 * i, status + i);
+    const auto checked = [&](std::size_t e) {
+      rci::detail::blend<&MotorPga::dq_blend, S, 8, 8>(1, k, d + 8 * k * e, w + k * e, out + 8 * e, status + e);
+    };
+    const auto store = [&](std::size_t e, const Motor<S>& m) {
+      const rci::DualQuat<S> o = pga::to_dual_quaternion(m);
+      std::copy(o.begin(), o.end(), out + 8 * e);
+      status[e] = RC_OK;
+    };
+    if constexpr (std::is_same_v<S, float>) {
+      if (k > 0 && k <= kLaneInfluences) {
+        const auto finish = [&](const auto& lanes, std::size_t i, std::size_t m) {
+          for (std::size_t l = 0; l < m; ++l) {
+            if (!lanes.ok[l]) [[unlikely]] {
+              checked(i + l);
+              continue;
+            }
+            store(i + l, Motor<S>{lanes.out[0][l], lanes.out[1][l], lanes.out[2][l], lanes.out[3][l],
+                                  lanes.out[4][l], lanes.out[5][l], lanes.out[6][l], lanes.out[7][l]});
+          }
+        };
+        std::size_t i = 0;
+        rotorcert::motor_lanes::BlendLanes<S, 16> wide;
+        for (; i + 16 <= n; i += 16) {
+          wide.run(k, d + 8 * k * i, w + k * i);
+          finish(wide, i, 16);
+        }
+        rotorcert::motor_lanes::BlendLanes<S, 4> narrow;
+        S dp[4 * 8 * kLaneInfluences], wp[4 * kLaneInfluences];
+        for (; i < n; i += 4) {
+          const std::size_t m = std::min<std::size_t>(4, n - i);
+          for (std::size_t l = 0; l < 4; ++l) {
+            const std::size_t e = i + std::min(l, m - 1);
+            std::copy(d + 8 * k * e, d + 8 * k * (e + 1), dp + 8 * k * l);
+            std::copy(w + k * e, w + k * (e + 1), wp + k * l);
+          }
+          narrow.run(k, dp, wp);
+          finish(narrow, i, m);
+        }
+        return 0;
       }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      Motor<S> m;
+      if (k > 0 && blend_ordinary(k, d + 8 * k * i, w + k * i, m)) [[likely]] store(i, m);
+      else checked(i);
     }
     return 0;
   }

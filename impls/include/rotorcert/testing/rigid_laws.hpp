@@ -297,49 +297,139 @@ template <class S> void blend_does_not_flip_on_exactly_zero_dot(const Ops<S>& op
 /// influences as given, bit for bit, where neither scale over- or underflows: each influence
 /// stands for its DQ-4 normalisation, and every step of DLB (normalise, weigh, sum, normalise) is
 /// homogeneous, so that only rounding could tell the scales apart, and power-of-two scales round
-/// alike. E is chosen to put |r|^2 outside the ordinary range (runtime/ordinary_range.hpp) in
-/// both directions, so one element of each call takes a table's fast path for ordinary input and
-/// the other two its checked path (the batch mixes them), and any difference between the two
-/// paths' arithmetic shows as a bit.
+/// alike. E puts |r|^2 outside the ordinary range (runtime/ordinary_range.hpp) in both
+/// directions, so the scaled copies take a table's checked path and the originals its fast
+/// paths; any difference between the paths' arithmetic shows as a bit. Per k = 1..5, 61 cases
+/// (a few with an exactly zero hemisphere dot, which only the exact sign decides) are blended
+/// in four batches: the originals alone (full blocks of SIMD lanes and a tail that is not one),
+/// each scaled set alone, and all three interleaved (lanes of a block then take different paths).
 template <class S> void blend_fast_and_checked_paths_agree(const Ops<S>& ops) {
   constexpr int E = std::is_same_v<S, float> ? 40 : 300;  // |r|^2 ~ 2^(+-2E): beyond 2^(+-emax/2)
+  constexpr std::size_t kCases = 61;  // neither a multiple of 16 nor of 4, nor is 3 x 61
   LawRng rng(7);
-  int checked = 0;
-  for (int i = 0; i < 300; ++i) {
-    const std::size_t k = 1 + i % 5;
-    std::vector<D<S>> ds(3 * k);
-    std::vector<S> w(3 * k);
-    bool representable = true;
-    for (std::size_t j = 0; j < k; ++j) {
-      D<S> d = rng.rigid<S>(ops);
-      const S size = S(rng.uniform(0.25, 4));  // non-unit influences too (EDGE-5)
-      for (S& c : d) {
-        c *= size;
-        representable = representable && (c == 0 || std::abs(c) > std::ldexp(std::numeric_limits<S>::min(), E + 8));
+  for (std::size_t k = 1; k <= 5; ++k) {
+    std::array<std::vector<D<S>>, 3> ds;  // originals, times 2^E, times 2^-E: kCases x k influences
+    std::vector<S> w;
+    for (std::size_t i = 0, attempt = 0; i < kCases; ++attempt) {
+      ASSERT_LT(attempt, 4 * kCases) << "the generator keeps drawing unusable cases";
+      std::vector<D<S>> one(k);
+      std::vector<S> wk(k);
+      bool usable = false, representable = true;
+      for (std::size_t j = 0; j < k; ++j) {
+        one[j] = rng.rigid<S>(ops);
+        if (j == 1 && i % 9 == 4)  // a signed permutation of the first real part: dot exactly 0
+          for (std::size_t c = 0; c < 4; ++c) one[j][c] = std::array<S, 4>{-one[0][1], one[0][0], -one[0][3], one[0][2]}[c];
+        const S size = S(rng.uniform(0.25, 4));  // non-unit influences too (EDGE-5)
+        for (S& c : one[j]) {
+          c *= size;
+          representable = representable && (c == 0 || std::abs(c) > std::ldexp(std::numeric_limits<S>::min(), E + 8));
+        }
+        wk[j] = (attempt + j) % 7 == 3 ? S(j % 2 ? -0.0 : 0.0) : S(rng.uniform(0, 2));  // zeros, -0 among them
+        usable = usable || wk[j] > 0;
       }
-      // Weights with zeros and -0 among them, at least one positive.
-      const S wj = (i + j) % 7 == 3 ? S(j % 2 ? -0.0 : 0.0) : S(rng.uniform(0, 2));
-      for (std::size_t c = 0; c < 8; ++c) {
-        ds[j][c] = d[c];
-        ds[k + j][c] = std::ldexp(d[c], E);
-        ds[2 * k + j][c] = std::ldexp(d[c], -E);
+      if (!representable || !usable) continue;
+      for (std::size_t j = 0; j < k; ++j) {
+        D<S> up, down;
+        for (std::size_t c = 0; c < 8; ++c) {
+          up[c] = std::ldexp(one[j][c], E);
+          down[c] = std::ldexp(one[j][c], -E);
+        }
+        ds[0].push_back(one[j]);
+        ds[1].push_back(up);
+        ds[2].push_back(down);
+        w.push_back(wk[j]);
       }
-      w[j] = w[k + j] = w[2 * k + j] = wj;
+      ++i;
     }
-    if (!representable || !(*std::max_element(w.begin(), w.begin() + k) > 0)) continue;
-    std::array<D<S>, 3> out;
-    std::array<std::uint8_t, 3> st{9, 9, 9};
-    ops.dq_blend(3, k, ds.front().data(), w.data(), out.front().data(), st.data());
-    ASSERT_EQ(st[0], RC_OK);
-    ASSERT_EQ(st[1], RC_OK);
-    ASSERT_EQ(st[2], RC_OK);
-    for (std::size_t c = 0; c < 8; ++c) {
-      EXPECT_EQ(out[1][c], out[0][c]) << "k=" << k << " case " << i << " component " << c << ": scaled by 2^" << E;
-      EXPECT_EQ(out[2][c], out[0][c]) << "k=" << k << " case " << i << " component " << c << ": scaled by 2^-" << E;
+    const auto blend = [&](const std::vector<D<S>>& d, const std::vector<S>& ws, std::size_t n) {
+      std::vector<D<S>> out(n);
+      std::vector<std::uint8_t> st(n, 9);
+      ops.dq_blend(n, k, d.front().data(), ws.data(), out.front().data(), st.data());
+      for (std::size_t e = 0; e < n; ++e) EXPECT_EQ(st[e], RC_OK) << "k=" << k << " element " << e;
+      return out;
+    };
+    const std::vector<D<S>> want = blend(ds[0], w, kCases);
+    std::vector<D<S>> mixed_d;
+    std::vector<S> mixed_w;
+    for (std::size_t i = 0; i < kCases; ++i)
+      for (std::size_t v = 0; v < 3; ++v) {
+        mixed_d.insert(mixed_d.end(), ds[v].begin() + i * k, ds[v].begin() + (i + 1) * k);
+        mixed_w.insert(mixed_w.end(), w.begin() + i * k, w.begin() + (i + 1) * k);
+      }
+    const std::vector<D<S>> mixed = blend(mixed_d, mixed_w, 3 * kCases);
+    for (std::size_t v = 1; v < 3; ++v) {
+      const std::vector<D<S>> got = blend(ds[v], w, kCases);
+      for (std::size_t i = 0; i < kCases; ++i)
+        for (std::size_t c = 0; c < 8; ++c)
+          EXPECT_EQ(got[i][c], want[i][c]) << "k=" << k << " case " << i << " component " << c << ": scaled by 2^"
+                                           << (v == 1 ? E : -E);
     }
-    ++checked;
+    for (std::size_t i = 0; i < kCases; ++i)
+      for (std::size_t v = 0; v < 3; ++v)
+        for (std::size_t c = 0; c < 8; ++c)
+          EXPECT_EQ(mixed[3 * i + v][c], want[i][c]) << "k=" << k << " case " << i << " component " << c
+                                                     << ": interleaved, variant " << v;
   }
-  EXPECT_GT(checked, 200);
+}
+
+/// DQ-3, EDGE-5: a point moved by a dual quaternion scaled by an exact power of two 2^E moves
+/// as by the dual quaternion as given, bit for bit (DQ-3 reads sigma through its DQ-4
+/// normalisation, homogeneous as in blend_fast_and_checked_paths_agree). 93 random motions,
+/// non-unit, with one non-finite point among them: the originals alone (SIMD lanes where a table
+/// has them, a scalar tail) against each scaled set alone and all three interleaved.
+template <class S> void apply_point_fast_and_checked_paths_agree(const Ops<S>& ops) {
+  constexpr int E = std::is_same_v<S, float> ? 40 : 300;
+  constexpr std::size_t kCases = 93;  // neither a multiple of 16 nor of 4, nor is 3 x 93
+  LawRng rng(11);
+  std::array<std::vector<D<S>>, 3> ds;
+  std::vector<V<S>> ps;
+  while (ps.size() < kCases) {
+    D<S> d = rng.rigid<S>(ops);
+    const S size = S(rng.uniform(0.25, 4));
+    bool representable = true;
+    for (S& c : d) {
+      c *= size;
+      representable = representable && (c == 0 || std::abs(c) > std::ldexp(std::numeric_limits<S>::min(), E + 8));
+    }
+    if (!representable) continue;
+    D<S> up, down;
+    for (std::size_t c = 0; c < 8; ++c) {
+      up[c] = std::ldexp(d[c], E);
+      down[c] = std::ldexp(d[c], -E);
+    }
+    ds[0].push_back(d);
+    ds[1].push_back(up);
+    ds[2].push_back(down);
+    ps.push_back(ps.size() == 37 ? V<S>{1, std::numeric_limits<S>::quiet_NaN(), 2} : rng.vec<S>(10));
+  }
+  const auto apply = [&](const std::vector<D<S>>& d, const std::vector<V<S>>& p) {
+    std::vector<V<S>> out(d.size());
+    std::vector<std::uint8_t> st(d.size(), 9);
+    ops.dq_apply_point(d.size(), d.front().data(), p.front().data(), out.front().data(), st.data());
+    for (std::size_t e = 0; e < d.size(); ++e)
+      EXPECT_EQ(st[e], std::isnan(p[e][1]) ? RC_DOMAIN_ERROR : RC_OK) << "element " << e;
+    return out;
+  };
+  const auto same = [](S a, S b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  const std::vector<V<S>> want = apply(ds[0], ps);
+  std::vector<D<S>> mixed_d;
+  std::vector<V<S>> mixed_p;
+  for (std::size_t i = 0; i < kCases; ++i)
+    for (std::size_t v = 0; v < 3; ++v) {
+      mixed_d.push_back(ds[v][i]);
+      mixed_p.push_back(ps[i]);
+    }
+  const std::vector<V<S>> mixed = apply(mixed_d, mixed_p);
+  for (std::size_t v = 1; v < 3; ++v) {
+    const std::vector<V<S>> got = apply(ds[v], ps);
+    for (std::size_t i = 0; i < kCases; ++i)
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_PRED2(same, got[i][c], want[i][c]) << "case " << i << " component " << c << ": scaled by 2^" << (v == 1 ? E : -E);
+  }
+  for (std::size_t i = 0; i < kCases; ++i)
+    for (std::size_t v = 0; v < 3; ++v)
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_PRED2(same, mixed[3 * i + v][c], want[i][c]) << "case " << i << " component " << c << ": interleaved, variant " << v;
 }
 
 }  // namespace rotorcert::testing::rigid_laws

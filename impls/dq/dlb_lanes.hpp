@@ -1,0 +1,168 @@
+// DQ-6 (DLB) and DQ-3 for L elements of a batch at once, in SoA lanes that the compiler turns
+// into SIMD: the fast paths of dq.cpp's dq_blend_batch and dq_apply_point_batch for ordinary
+// input, kept apart from the scalar math (dq.cpp) in the manner of ozz-animation's SoA jobs.
+//
+// Data: the ABI's AoS arrays in (element e: k influences of [real xyzw, dual xyzw] at
+// d + 8 k e, k weights at w + k e) are copied influence by influence into lane arrays
+// x[component][lane], component 0..3 the real part's x, y, z, w and 4..7 the dual part's.
+//
+// Every lane computes exactly what dq.cpp's dlb_ordinary() computes for its element: the same
+// IEEE operations (+, -, *, /, sqrt, each correctly rounded, in SIMD as in scalar code) in the
+// same order, so the same bits. Where dlb_ordinary() would return false (a cheap test fails),
+// the lane's `ok` is false and the caller takes the checked path for that element; the lane's
+// other values are then meaningless (they may be NaN or inf: no trap, no errno, see
+// CMakeLists.txt: -fno-math-errno lets sqrt vectorise, -ffp-contract=off keeps a * b + c two
+// roundings, as in the scalar code). No branch depends on a lane's value, so that the loops
+// vectorise.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include <rotorcert/runtime/ordinary_range.hpp>
+
+namespace rotorcert::dq_lanes {
+
+template <class S, std::size_t L>
+struct DlbLanes {
+  /// A lane flag, 1 or 0: bool arrays do not vectorise.
+  using Flag = std::int32_t;
+
+  S out[8][L];  // DQ-4 of the weighted sum, where ok
+  Flag ok[L];
+
+  /// The L elements starting at d (influences) and w (weights), k >= 1 influences each.
+  void run(std::size_t k, const S* d, const S* w) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    constexpr S kLo = runtime::OrdinaryRange<S>::kLo, kHi = runtime::OrdinaryRange<S>::kHi;
+    // EDGE-9: weights in [0, max], the largest, the pivot (first weight > 0).
+    S w_max[L], pivot[4][L], sum[8][L];
+    Flag p[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = true;
+      w_max[l] = 0;
+      p[l] = Flag(k);
+    }
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t l = 0; l < L; ++l) {
+        const S wi = w[k * l + i];
+        ok[l] = ok[l] & Flag((wi >= 0) & (wi <= kMax));
+        w_max[l] = wi > w_max[l] ? wi : w_max[l];
+        p[l] = ((p[l] == Flag(k)) & (wi > 0)) ? Flag(i) : p[l];
+      }
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = ok[l] & Flag(p[l] != Flag(k));
+      const std::size_t at = 8 * k * l + 8 * (p[l] == Flag(k) ? 0 : std::size_t(p[l]));
+      for (std::size_t c = 0; c < 4; ++c) pivot[c][l] = d[at + c];
+      for (std::size_t c = 0; c < 8; ++c) sum[c][l] = 0;
+    }
+
+    S x[8][L];
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l)
+        for (std::size_t c = 0; c < 8; ++c) x[c][l] = d[8 * k * l + 8 * i + c];
+      for (std::size_t l = 0; l < L; ++l) {
+        // DQ-4 of the influence (dq.cpp normalized_ordinary), dots in x, y, z, w order.
+        const S r2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+        const S d2 = x[4][l] * x[4][l] + x[5][l] * x[5][l] + x[6][l] * x[6][l] + x[7][l] * x[7][l];
+        bool good = (r2 >= kLo) & (r2 <= kHi) & ((d2 == 0) | ((d2 >= kLo) & (d2 <= kHi)));
+        const S n = std::sqrt(r2);
+        const S u0 = x[0][l] / n, u1 = x[1][l] / n, u2 = x[2][l] / n, u3 = x[3][l] / n;
+        const S along = u0 * x[4][l] + u1 * x[5][l] + u2 * x[6][l] + u3 * x[7][l];
+        good = good & (d2 <= kMax) & !(along * along > S(0.9375) * d2);  // runtime::projection_cancels
+        const S v0 = (x[4][l] - along * u0) / n, v1 = (x[5][l] - along * u1) / n;
+        const S v2 = (x[6][l] - along * u2) / n, v3 = (x[7][l] - along * u3) / n;
+        // The hemisphere sign by the filter of runtime::filtered_dot_sign<S, 4>, undecided -> not ok.
+        const S q0 = x[0][l] * pivot[0][l], q1 = x[1][l] * pivot[1][l], q2 = x[2][l] * pivot[2][l],
+                q3 = x[3][l] * pivot[3][l];
+        const S dot = S(0) + q0 + q1 + q2 + q3;
+        const S size = S(0) + std::abs(q0) + std::abs(q1) + std::abs(q2) + std::abs(q3);
+        constexpr S u = std::numeric_limits<S>::epsilon() / 2;
+        const S bound = S(8) * u * size + S(8) * std::numeric_limits<S>::denorm_min();
+        const bool decided = (size <= kMax) & ((dot > bound) | (dot < -bound));
+        good = good & decided;
+        const S f0 = w[k * l + i] / w_max[l];
+        const S f = dot < -bound ? -f0 : f0;
+        sum[0][l] = sum[0][l] + f * u0;
+        sum[1][l] = sum[1][l] + f * u1;
+        sum[2][l] = sum[2][l] + f * u2;
+        sum[3][l] = sum[3][l] + f * u3;
+        sum[4][l] = sum[4][l] + f * v0;
+        sum[5][l] = sum[5][l] + f * v1;
+        sum[6][l] = sum[6][l] + f * v2;
+        sum[7][l] = sum[7][l] + f * v3;
+        ok[l] = ok[l] & Flag(good);
+      }
+    }
+
+    // DQ-4 of the sum, where it is ordinary and its projection does not cancel (else not ok: the
+    // checked path normalises with scaling or without the subtraction).
+    for (std::size_t l = 0; l < L; ++l) {
+      const S r2 = sum[0][l] * sum[0][l] + sum[1][l] * sum[1][l] + sum[2][l] * sum[2][l] + sum[3][l] * sum[3][l];
+      const S d2 = sum[4][l] * sum[4][l] + sum[5][l] * sum[5][l] + sum[6][l] * sum[6][l] + sum[7][l] * sum[7][l];
+      const bool good = (r2 >= kLo) & (r2 <= kHi) & ((d2 == 0) | ((d2 >= kLo) & (d2 <= kHi)));
+      const S n = std::sqrt(r2);
+      const S u0 = sum[0][l] / n, u1 = sum[1][l] / n, u2 = sum[2][l] / n, u3 = sum[3][l] / n;
+      const S along = u0 * sum[4][l] + u1 * sum[5][l] + u2 * sum[6][l] + u3 * sum[7][l];
+      ok[l] = ok[l] & Flag(good & (d2 <= kMax) & !(along * along > S(0.9375) * d2));
+      out[0][l] = u0;
+      out[1][l] = u1;
+      out[2][l] = u2;
+      out[3][l] = u3;
+      out[4][l] = (sum[4][l] - along * u0) / n;
+      out[5][l] = (sum[5][l] - along * u1) / n;
+      out[6][l] = (sum[6][l] - along * u2) / n;
+      out[7][l] = (sum[7][l] - along * u3) / n;
+    }
+  }
+};
+
+/// DQ-3 for L elements of a dq_apply_point batch at once: dq.cpp's apply_point() (divide both
+/// parts by |r|, rotate, add the translation) on elements whose |r|^2 is ordinary and |d|^2
+/// ordinary or 0 (then safely_scaled() is the identity and every component is finite) and whose
+/// point is finite; the same operations in the same order, so the same bits. Data: element e's
+/// dual quaternion at d + 8 e, its point at p + 3 e (the ABI arrays).
+template <class S, std::size_t L>
+struct ApplyPointLanes {
+  using Flag = std::int32_t;
+
+  S out[3][L];  // R p + t, where ok
+  Flag ok[L];
+
+  void run(const S* d, const S* p) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    constexpr S kLo = runtime::OrdinaryRange<S>::kLo, kHi = runtime::OrdinaryRange<S>::kHi;
+    S x[8][L], v[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      for (std::size_t c = 0; c < 8; ++c) x[c][l] = d[8 * l + c];
+      for (std::size_t c = 0; c < 3; ++c) v[c][l] = p[3 * l + c];
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S r2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const S d2 = x[4][l] * x[4][l] + x[5][l] * x[5][l] + x[6][l] * x[6][l] + x[7][l] * x[7][l];
+      const bool finite_point = (v[0][l] <= kMax) & (v[0][l] >= -kMax) & (v[1][l] <= kMax) & (v[1][l] >= -kMax) &
+                                (v[2][l] <= kMax) & (v[2][l] >= -kMax);
+      ok[l] = Flag((r2 >= kLo) & (r2 <= kHi) & ((d2 == 0) | ((d2 >= kLo) & (d2 <= kHi))) & finite_point);
+      const S n = std::sqrt(r2);
+      const S ux = x[0][l] / n, uy = x[1][l] / n, uz = x[2][l] / n, uw = x[3][l] / n;
+      const S dx = x[4][l] / n, dy = x[5][l] / n, dz = x[6][l] / n, dw = x[7][l] / n;
+      const S px = v[0][l], py = v[1][l], pz = v[2][l];
+      // rotate(): t = 2 (u x p), p + w t + u x t.
+      const S tx = S(2) * (uy * pz - uz * py), ty = S(2) * (uz * px - ux * pz), tz = S(2) * (ux * py - uy * px);
+      const S rx = px + uw * tx + (uy * tz - uz * ty);
+      const S ry = py + uw * ty + (uz * tx - ux * tz);
+      const S rz = pz + uw * tz + (ux * ty - uy * tx);
+      // translation(): 2 (r_w d_v - d_w r_v + r_v x d_v).
+      const S sx = S(2) * (uw * dx - dw * ux + (uy * dz - uz * dy));
+      const S sy = S(2) * (uw * dy - dw * uy + (uz * dx - ux * dz));
+      const S sz = S(2) * (uw * dz - dw * uz + (ux * dy - uy * dx));
+      out[0][l] = rx + sx;
+      out[1][l] = ry + sy;
+      out[2][l] = rz + sz;
+    }
+  }
+};
+
+}  // namespace rotorcert::dq_lanes

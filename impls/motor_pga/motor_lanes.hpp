@@ -1,0 +1,170 @@
+// MOTOR-5 (the blend of motors, DLB under MOTOR-1) and the sandwich of a point for L elements of
+// a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of
+// motor_pga.cpp's dq_blend_batch and dq_apply_point_batch for ordinary input, kept apart from the
+// scalar math (motor.hpp, motor_pga.cpp) in the manner of ozz-animation's SoA jobs.
+//
+// Data: the ABI's dual quaternions (element e: k influences of 8 scalars at d + 8 k e, k weights
+// at w + k e; a point at p + 3 e) are read through MOTOR-1 into lane arrays m[coefficient][lane],
+// coefficients in motor.hpp's order (s, e23, e31, e12, e01, e02, e03, e0123).
+//
+// Every lane computes what the scalar fast path computes for its element (motor_pga.cpp's
+// blend_ordinary(), pga::normalized_ordinary(), pga::sandwich()): the same IEEE operations in the
+// same order, so the same bits. Where a cheap test fails, the lane's `ok` is 0 and the caller
+// takes the checked path for that element; the lane's other values are then meaningless (NaN or
+// inf, no trap: see CMakeLists.txt for the flags). No branch depends on a lane's value.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include <rotorcert/runtime/ordinary_range.hpp>
+
+namespace rotorcert::motor_lanes {
+
+using Flag = std::int32_t;  // a lane flag, 1 or 0: bool arrays do not vectorise
+
+/// MOTOR-1 of the ABI dual quaternion at x into lane l of m.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline void load_motor(const S* x, std::size_t l, S (&m)[8][L]) {
+  m[0][l] = x[3];
+  m[1][l] = -x[0];
+  m[2][l] = -x[1];
+  m[3][l] = -x[2];
+  m[4][l] = -x[4];
+  m[5][l] = -x[5];
+  m[6][l] = -x[6];
+  m[7][l] = -x[7];
+}
+
+/// pga::normalized_ordinary() of the motor in lane l of m, into u; returns the lane's test.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline bool normalized_lane(const S (&m)[8][L], std::size_t l, S (&u)[8]) {
+  constexpr S kMax = std::numeric_limits<S>::max();
+  constexpr S kLo = runtime::OrdinaryRange<S>::kLo, kHi = runtime::OrdinaryRange<S>::kHi;
+  const S s = m[0][l], b0 = m[1][l], b1 = m[2][l], b2 = m[3][l];
+  const S c0 = m[4][l], c1 = m[5][l], c2 = m[6][l], p = m[7][l];
+  const S n2 = s * s + b0 * b0 + b1 * b1 + b2 * b2;
+  const S i2 = c0 * c0 + c1 * c1 + c2 * c2 + p * p;
+  const S n = std::sqrt(s * s + (b0 * b0 + b1 * b1 + b2 * b2));
+  const S su = s / n, bu0 = b0 / n, bu1 = b1 / n, bu2 = b2 / n;
+  const S k = (bu0 * c0 + bu1 * c1 + bu2 * c2) - su * p;
+  u[0] = su;
+  u[1] = bu0;
+  u[2] = bu1;
+  u[3] = bu2;
+  u[4] = (c0 - k * bu0) / n;
+  u[5] = (c1 - k * bu1) / n;
+  u[6] = (c2 - k * bu2) / n;
+  u[7] = (p + k * su) / n;
+  return (n2 >= kLo) & (n2 <= kHi) & ((i2 == 0) | ((i2 >= kLo) & (i2 <= kHi))) & (i2 <= kMax) &
+         !(k * k > S(0.9375) * i2);  // runtime::projection_cancels
+}
+
+template <class S, std::size_t L>
+struct BlendLanes {
+  S out[8][L];  // the normalised weighted sum as a motor, where ok
+  Flag ok[L];
+
+  /// The L elements starting at d (influences) and w (weights), k >= 1 influences each.
+  void run(std::size_t k, const S* d, const S* w) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    S w_max[L], pivot[4][L], sum[8][L], m[8][L];
+    Flag p[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = 1;
+      w_max[l] = 0;
+      p[l] = Flag(k);
+    }
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t l = 0; l < L; ++l) {
+        const S wi = w[k * l + i];
+        ok[l] = ok[l] & Flag((wi >= 0) & (wi <= kMax));  // EDGE-9
+        w_max[l] = wi > w_max[l] ? wi : w_max[l];
+        p[l] = ((p[l] == Flag(k)) & (wi > 0)) ? Flag(i) : p[l];
+      }
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = ok[l] & Flag(p[l] != Flag(k));
+      const S* x = d + 8 * k * l + 8 * (p[l] == Flag(k) ? 0 : std::size_t(p[l]));
+      pivot[0][l] = x[3];
+      pivot[1][l] = -x[0];
+      pivot[2][l] = -x[1];
+      pivot[3][l] = -x[2];
+      for (std::size_t c = 0; c < 8; ++c) sum[c][l] = 0;
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l) load_motor(d + 8 * k * l + 8 * i, l, m);
+      for (std::size_t l = 0; l < L; ++l) {
+        S u[8];
+        bool good = normalized_lane(m, l, u);
+        // The hemisphere sign by the filter of runtime::filtered_dot_sign<S, 4> on the raw rotor
+        // parts (s, e23, e31, e12); undecided -> not ok.
+        const S q0 = m[0][l] * pivot[0][l], q1 = m[1][l] * pivot[1][l], q2 = m[2][l] * pivot[2][l],
+                q3 = m[3][l] * pivot[3][l];
+        const S dot = S(0) + q0 + q1 + q2 + q3;
+        const S size = S(0) + std::abs(q0) + std::abs(q1) + std::abs(q2) + std::abs(q3);
+        constexpr S unit_roundoff = std::numeric_limits<S>::epsilon() / 2;
+        const S bound = S(8) * unit_roundoff * size + S(8) * std::numeric_limits<S>::denorm_min();
+        good = good & (size <= kMax) & ((dot > bound) | (dot < -bound));
+        const S f0 = w[k * l + i] / w_max[l];
+        const S f = dot < -bound ? -f0 : f0;
+        sum[0][l] = sum[0][l] + f * u[0];  // written out: a loop over c here keeps l's loop scalar
+        sum[1][l] = sum[1][l] + f * u[1];
+        sum[2][l] = sum[2][l] + f * u[2];
+        sum[3][l] = sum[3][l] + f * u[3];
+        sum[4][l] = sum[4][l] + f * u[4];
+        sum[5][l] = sum[5][l] + f * u[5];
+        sum[6][l] = sum[6][l] + f * u[6];
+        sum[7][l] = sum[7][l] + f * u[7];
+        ok[l] = ok[l] & Flag(good);
+      }
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      S u[8];
+      ok[l] = ok[l] & Flag(normalized_lane(sum, l, u));
+      out[0][l] = u[0];
+      out[1][l] = u[1];
+      out[2][l] = u[2];
+      out[3][l] = u[3];
+      out[4][l] = u[4];
+      out[5][l] = u[5];
+      out[6][l] = u[6];
+      out[7][l] = u[7];
+    }
+  }
+};
+
+template <class S, std::size_t L>
+struct ApplyPointLanes {
+  S out[3][L];  // the moved point, where ok
+  Flag ok[L];
+
+  /// The L elements starting at d (dual quaternions) and p (points).
+  void run(const S* d, const S* p) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    S m[8][L], v[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      load_motor(d + 8 * l, l, m);
+      for (std::size_t c = 0; c < 3; ++c) v[c][l] = p[3 * l + c];
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      S u[8];
+      const bool finite_point = (v[0][l] <= kMax) & (v[0][l] >= -kMax) & (v[1][l] <= kMax) & (v[1][l] >= -kMax) &
+                                (v[2][l] <= kMax) & (v[2][l] >= -kMax);
+      ok[l] = Flag(normalized_lane(m, l, u)) & Flag(finite_point);
+      // pga::sandwich() of the point (x, y, z, 1).
+      const S s = u[0], b0 = u[1], b1 = u[2], b2 = u[3], c0 = u[4], c1 = u[5], c2 = u[6], e0123 = u[7];
+      const S x0 = v[0][l], x1 = v[1][l], x2 = v[2][l];
+      const S w0 = b1 * x2 - b2 * x1, w1 = b2 * x0 - b0 * x2, w2 = b0 * x1 - b1 * x0;       // b x x
+      const S bu0 = b1 * w2 - b2 * w1, bu1 = b2 * w0 - b0 * w2, bu2 = b0 * w1 - b1 * w0;  // b x (b x x)
+      const S bc0 = b1 * c2 - b2 * c1, bc1 = b2 * c0 - b0 * c2, bc2 = b0 * c1 - b1 * c0;  // b x c
+      const S two_w = S(2) * S(1);
+      out[0][l] = x0 - S(2) * s * w0 + S(2) * bu0 - two_w * (e0123 * b0 + s * c0 - bc0);
+      out[1][l] = x1 - S(2) * s * w1 + S(2) * bu1 - two_w * (e0123 * b1 + s * c1 - bc1);
+      out[2][l] = x2 - S(2) * s * w2 + S(2) * bu2 - two_w * (e0123 * b2 + s * c2 - bc2);
+    }
+  }
+};
+
+}  // namespace rotorcert::motor_lanes
