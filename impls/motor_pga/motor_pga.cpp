@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_blocks.hpp>
 #include <rotorcert/runtime/scalar_real_part_log.hpp>
 #include <rotorcert/impl_table.hpp>
 
@@ -257,34 +258,13 @@ struct MotorPga {
   static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out, std::uint8_t* status) {
     using Checked = rci::detail::Elementwise<&MotorPga::dq_apply_point, decltype(&MotorPga::dq_apply_point)>;
     if constexpr (std::is_same_v<S, float>) {
-      const auto finish = [&](const auto& lanes, std::size_t i, std::size_t m) {
-        for (std::size_t l = 0; l < m; ++l) {
-          if (!lanes.ok[l]) [[unlikely]] {
-            Checked::run(1, d + 8 * (i + l), p + 3 * (i + l), out + 3 * (i + l), status + i + l);
-            continue;
-          }
-          for (std::size_t c = 0; c < 3; ++c) out[3 * (i + l) + c] = lanes.out[c][l];
-          status[i + l] = RC_OK;
-        }
-      };
-      std::size_t i = 0;
-      rotorcert::motor_lanes::ApplyPointLanes<S, 16> wide;
-      for (; i + 16 <= n; i += 16) {
-        wide.run(d + 8 * i, p + 3 * i);
-        finish(wide, i, 16);
-      }
-      rotorcert::motor_lanes::ApplyPointLanes<S, 4> narrow;
-      S dp[4 * 8], pp[4 * 3];
-      for (; i < n; i += 4) {
-        const std::size_t m = std::min<std::size_t>(4, n - i);
-        for (std::size_t l = 0; l < 4; ++l) {
-          const std::size_t e = i + std::min(l, m - 1);
-          std::copy(d + 8 * e, d + 8 * (e + 1), dp + 8 * l);
-          std::copy(p + 3 * e, p + 3 * (e + 1), pp + 3 * l);
-        }
-        narrow.run(dp, pp);
-        finish(narrow, i, m);
-      }
+      runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes, 8>(
+          n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
+          [&](std::size_t e, const auto& lanes, std::size_t l) {
+            for (std::size_t c = 0; c < 3; ++c) out[3 * e + c] = lanes.out[c][l];
+            status[e] = RC_OK;
+          },
+          [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
       return 0;
     }
     return Checked::run(n, d, p, out, status);
@@ -332,34 +312,13 @@ struct MotorPga {
     };
     if constexpr (std::is_same_v<S, float>) {
       if (k > 0 && k <= kLaneInfluences) {
-        const auto finish = [&](const auto& lanes, std::size_t i, std::size_t m) {
-          for (std::size_t l = 0; l < m; ++l) {
-            if (!lanes.ok[l]) [[unlikely]] {
-              checked(i + l);
-              continue;
-            }
-            store(i + l, Motor<S>{lanes.out[0][l], lanes.out[1][l], lanes.out[2][l], lanes.out[3][l],
-                                  lanes.out[4][l], lanes.out[5][l], lanes.out[6][l], lanes.out[7][l]});
-          }
-        };
-        std::size_t i = 0;
-        rotorcert::motor_lanes::BlendLanes<S, 16> wide;
-        for (; i + 16 <= n; i += 16) {
-          wide.run(k, d + 8 * k * i, w + k * i);
-          finish(wide, i, 16);
-        }
-        rotorcert::motor_lanes::BlendLanes<S, 4> narrow;
-        S dp[4 * 8 * kLaneInfluences], wp[4 * kLaneInfluences];
-        for (; i < n; i += 4) {
-          const std::size_t m = std::min<std::size_t>(4, n - i);
-          for (std::size_t l = 0; l < 4; ++l) {
-            const std::size_t e = i + std::min(l, m - 1);
-            std::copy(d + 8 * k * e, d + 8 * k * (e + 1), dp + 8 * k * l);
-            std::copy(w + k * e, w + k * (e + 1), wp + k * l);
-          }
-          narrow.run(k, dp, wp);
-          finish(narrow, i, m);
-        }
+        runtime::in_lanes_or_checked<rotorcert::motor_lanes::BlendLanes, 8 * kLaneInfluences>(
+            n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
+            [&](std::size_t e, const auto& lanes, std::size_t l) {
+              store(e, Motor<S>{lanes.out[0][l], lanes.out[1][l], lanes.out[2][l], lanes.out[3][l], lanes.out[4][l],
+                                lanes.out[5][l], lanes.out[6][l], lanes.out[7][l]});
+            },
+            checked);
         return 0;
       }
     }
