@@ -115,15 +115,6 @@ template <class S>
   return {V3<S>{f * d[0], f * d[1], f * d[2]}, -f * d[3]};
 }
 
-/// M (M ~M)^(-1/2). With n^2 = s^2 + |b|^2 and M ~M = n^2 + 2 (s p - b.c) e0123 this is
-///   (s, b, c, p) -> (s, b, c - k b, p + k s) / n,   k = (b.c - s p) / n^2,
-/// i.e. DQ-4 carried over by MOTOR-1. A common power-of-two scale (exact) comes first so that
-/// n^2 neither overflows nor underflows, unless the rotor part's n^2 and the ideal part's squares
-/// are ordinary (runtime/ordinary_range.hpp: then the scale would change nothing but underflows
-/// far below the unit roundoff). Where the subtraction of k b would cancel, the ideal part comes from
-/// runtime/perpendicular_part.hpp instead. Precondition: finite, rotor part nonzero.
-template <class S> Motor<S> normalized(const Motor<S>& m);
-
 /// The rotor part's n^2 and the ideal part's squares of M.
 template <class S> S rotor_norm2(const Motor<S>& m) { return m.s * m.s + m.e23 * m.e23 + m.e31 * m.e31 + m.e12 * m.e12; }
 template <class S> S ideal_norm2(const Motor<S>& m) {
@@ -147,10 +138,18 @@ template <class S>
   return true;
 }
 
+/// M (M ~M)^(-1/2). With n^2 = s^2 + |b|^2 and M ~M = n^2 + 2 (s p - b.c) e0123 this is
+///   (s, b, c, p) -> (s, b, c - k b, p + k s) / n,   k = (b.c - s p) / n^2,
+/// i.e. DQ-4 carried over by MOTOR-1. A common power-of-two scale (exact) comes first so that
+/// n^2 neither overflows nor underflows, unless the rotor part's n^2 and the ideal part's squares
+/// are ordinary (runtime/ordinary_range.hpp: then the scale would change nothing but underflows
+/// far below the unit roundoff). Where the subtraction of k b would cancel, the ideal part comes from
+/// runtime/perpendicular_part.hpp instead. Precondition: finite, rotor part nonzero.
 template <class S> Motor<S> normalized(const Motor<S>& m) {
   using std::abs;
   const S n2 = rotor_norm2(m);
   const S i2 = ideal_norm2(m);
+  if (Motor<S> u; normalized_ordinary(m, n2, i2, u)) return u;
   const bool ordinary = runtime::is_ordinary_square(n2) && (i2 == 0 || runtime::is_ordinary_square(i2));
   const int e = ordinary ? 0 : -std::ilogb(std::max({abs(m.s), abs(m.e23), abs(m.e31), abs(m.e12)}));
   const auto scaled = [&](S x) { return ordinary ? x : std::scalbn(x, e); };
