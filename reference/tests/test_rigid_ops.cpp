@@ -532,6 +532,26 @@ TEST(RigidEdge, NonUnitRealPartIsNormalised) {
   }
 }
 
+// ---- DQ-7: DQ-1 read backwards -----------------------------------------------------------------
+
+TEST(DualQuaternion, RotationAndTranslationInvertFromRotationTranslation) {
+  RC_CLAUSE("DQ-7");
+  check_cases(100, [] {
+    const Q q = *quaternion();  // not unit: stands for q/|q|
+    RC_PRE(norm(q) > Real(1) / Real(64));
+    const V3 t = *translation();
+    // A non-unit representative with a part of the dual along the real part (EDGE-5): same q, t.
+    const DQ sigma = disturbed(DQ_1_from_rotation_translation(q, t).value, *positive_scale(), *real_in(4));
+    const auto r = DQ_7_to_rotation_translation(sigma);
+    RC_ASSERT(r.status == Status::ok);
+    RC_ASSERT(near(r.value.q, unit_of(q)));
+    RC_ASSERT(near(r.value.t, t));
+  });
+  EXPECT_TRUE(is_domain_error(DQ_7_to_rotation_translation(DQ{Q{Real(0), Real(0), Real(0), Real(0)}, Q::identity()})));  // EDGE-6
+  EXPECT_TRUE(is_domain_error(
+      DQ_7_to_rotation_translation(DQ{Q::identity(), Q{Real(0), ScalarTraits<Real>::nan(), Real(0), Real(0)}})));  // EDGE-7
+}
+
 // ---- RIGID-1 .. RIGID-3: rotation + translation against the matrix formula and DQ-2/DQ-3 --------
 
 TEST(RigidTransform, ApplyRotatesThenTranslates) {

@@ -228,15 +228,7 @@ std::vector<AbiOp> build() {
        [](const Values& in, std::size_t) { return one(sqrt_reference(quat(in[0]))); }, {}});
   add({"dq_to_rotation_translation", {d}, {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)},
        false,
-       [](const Values& in, std::size_t) {
-         // DQ-7: the rotation r/|r| and the translation 2 d r*/|r|^2 of DQ-4(sigma) (DQ-1 inverted).
-         const DQ sigma = dq(in[0]);
-         const auto unit = clause::DQ_4_normalize(sigma);
-         const auto shift = clause::DQ_1_translation(sigma);
-         const bool ok = unit.status == ref::Status::ok && shift.status == ref::Status::ok;
-         return ReferenceResult{ok ? ref::Status::ok : ref::Status::domain_error,
-                                {flat(unit.value.real), flat(shift.value)}};
-       },
+       [](const Values& in, std::size_t) { return pair(clause::DQ_7_to_rotation_translation(dq(in[0]))); },
        [](const Values& in, std::size_t) {
          const DQ sigma = dq(in[0]);
          if (!ref::finite(sigma) || ref::is_zero(sigma.real)) return Real(1);

@@ -156,14 +156,7 @@ const std::map<std::string, FastFn>& fast_ops() {
       {"rigid_inverse",
        [](const BoundedValues& in, std::size_t) { return pair(clause::RIGID_3_inverse(quat(in[0]), vec3(in[1]))); }},
       {"dq_to_rotation_translation",
-       [](const BoundedValues& in, std::size_t) {
-         const BDQ sigma = dq(in[0]);
-         const auto unit = clause::DQ_4_normalize(sigma);
-         const auto shift = clause::DQ_1_translation(sigma);
-         const bool ok = unit.status == ref::Status::ok && shift.status == ref::Status::ok;
-         return FastReference{ok ? ref::Status::ok : ref::Status::domain_error,
-                              {flat(unit.value.real), flat(shift.value)}};
-       }},
+       [](const BoundedValues& in, std::size_t) { return pair(clause::DQ_7_to_rotation_translation(dq(in[0]))); }},
       {"dq_log",
        [](const BoundedValues& in, std::size_t) {
          const auto r = clause::DQ_8_log(dq(in[0]));

@@ -353,6 +353,17 @@ Result<DualVector<T>> DQ_8_log(const DualQuaternion<T>& sigma) {
   return {{pga::scaled3(b, n), {a * n[0] + k * perp[0], a * n[1] + k * perp[1], a * n[2] + k * perp[2]}}, Status::ok};
 }
 
+// ---- rotation and translation of a dual quaternion (DQ-7) -----------------------------------------
+
+/// DQ-7: DQ-1 read backwards after DQ-4: q = r/|r| and t = 2 d' r'* of (r', d') = DQ-4(sigma) (the
+/// part of d along r carries no translation).
+template <class T>
+Result<RotationTranslation<T>> DQ_7_to_rotation_translation(const DualQuaternion<T>& sigma) {
+  if (!rigid::valid(sigma)) return domain_error<RotationTranslation<T>>();
+  const DualQuaternion<T> unit = rigid::normalized(sigma);
+  return {{unit.real, rigid::translation_of_unit(unit)}, Status::ok};
+}
+
 // ---- rigid transforms as rotation + translation (RIGID-1 .. RIGID-3) ----------------------------
 
 
