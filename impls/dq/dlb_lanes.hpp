@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <limits>
 
+#include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
 namespace rotorcert::dq_lanes {
@@ -75,16 +76,12 @@ struct DlbLanes {
         const S v0 = (x[4][l] - along * u0) / n, v1 = (x[5][l] - along * u1) / n;
         const S v2 = (x[6][l] - along * u2) / n, v3 = (x[7][l] - along * u3) / n;
         // The hemisphere sign by the filter of runtime::filtered_dot_sign<S, 4>, undecided -> not ok.
-        const S q0 = x[0][l] * pivot[0][l], q1 = x[1][l] * pivot[1][l], q2 = x[2][l] * pivot[2][l],
-                q3 = x[3][l] * pivot[3][l];
-        const S dot = S(0) + q0 + q1 + q2 + q3;
-        const S size = S(0) + std::abs(q0) + std::abs(q1) + std::abs(q2) + std::abs(q3);
-        constexpr S u = std::numeric_limits<S>::epsilon() / 2;
-        const S bound = S(8) * u * size + S(8) * std::numeric_limits<S>::denorm_min();
-        const bool decided = (size <= kMax) & ((dot > bound) | (dot < -bound));
+        bool negative;
+        const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], pivot[0][l], pivot[1][l],
+                                                         pivot[2][l], pivot[3][l], negative);
         good = good & decided;
         const S f0 = w[k * l + i] / w_max[l];
-        const S f = dot < -bound ? -f0 : f0;
+        const S f = negative ? -f0 : f0;
         sum[0][l] = sum[0][l] + f * u0;
         sum[1][l] = sum[1][l] + f * u1;
         sum[2][l] = sum[2][l] + f * u2;

@@ -485,10 +485,7 @@ struct Dq {
     if constexpr (std::is_same_v<S, float>) {
       runtime::in_lanes_or_checked<rotorcert::dq_lanes::ApplyPointLanes, 8>(
           n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-          [&](std::size_t e, const auto& lanes, std::size_t l) {
-            for (std::size_t c = 0; c < 3; ++c) out[3 * e + c] = lanes.out[c][l];
-            status[e] = RC_OK;
-          },
+          runtime::copy_lane_outputs<3>(out, status),
           [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
       return 0;
     }
@@ -586,11 +583,7 @@ struct Dq {
       if (k > 0 && k <= kLaneInfluences) {
         runtime::in_lanes_or_checked<rotorcert::dq_lanes::DlbLanes, 8 * kLaneInfluences>(
             n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
-            [&](std::size_t e, const auto& lanes, std::size_t l) {
-              for (std::size_t c = 0; c < 8; ++c) out[8 * e + c] = lanes.out[c][l];
-              status[e] = RC_OK;
-            },
-            checked);
+            runtime::copy_lane_outputs<8>(out, status), checked);
         return 0;
       }
     }

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <limits>
 
+#include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
 namespace rotorcert::motor_lanes {
@@ -100,15 +101,12 @@ struct BlendLanes {
         bool good = normalized_lane(m, l, u);
         // The hemisphere sign by the filter of runtime::filtered_dot_sign<S, 4> on the raw rotor
         // parts (s, e23, e31, e12); undecided -> not ok.
-        const S q0 = m[0][l] * pivot[0][l], q1 = m[1][l] * pivot[1][l], q2 = m[2][l] * pivot[2][l],
-                q3 = m[3][l] * pivot[3][l];
-        const S dot = S(0) + q0 + q1 + q2 + q3;
-        const S size = S(0) + std::abs(q0) + std::abs(q1) + std::abs(q2) + std::abs(q3);
-        constexpr S unit_roundoff = std::numeric_limits<S>::epsilon() / 2;
-        const S bound = S(8) * unit_roundoff * size + S(8) * std::numeric_limits<S>::denorm_min();
-        good = good & (size <= kMax) & ((dot > bound) | (dot < -bound));
+        bool negative;
+        const bool decided = runtime::filtered_dot4_lane(m[0][l], m[1][l], m[2][l], m[3][l], pivot[0][l], pivot[1][l],
+                                                         pivot[2][l], pivot[3][l], negative);
+        good = good & decided;
         const S f0 = w[k * l + i] / w_max[l];
-        const S f = dot < -bound ? -f0 : f0;
+        const S f = negative ? -f0 : f0;
         sum[0][l] = sum[0][l] + f * u[0];  // written out: a loop over c here keeps l's loop scalar
         sum[1][l] = sum[1][l] + f * u[1];
         sum[2][l] = sum[2][l] + f * u[2];

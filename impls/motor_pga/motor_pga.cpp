@@ -260,10 +260,7 @@ struct MotorPga {
     if constexpr (std::is_same_v<S, float>) {
       runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes, 8>(
           n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-          [&](std::size_t e, const auto& lanes, std::size_t l) {
-            for (std::size_t c = 0; c < 3; ++c) out[3 * e + c] = lanes.out[c][l];
-            status[e] = RC_OK;
-          },
+          runtime::copy_lane_outputs<3>(out, status),
           [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
       return 0;
     }

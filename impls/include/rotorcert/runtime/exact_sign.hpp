@@ -124,6 +124,20 @@ int exact_dot_sign(const std::array<S, N>& a, const std::array<S, N>& b) {
   return detail::exact_dot_sign_wide(a, b);
 }
 
+/// filtered_dot_sign<S, 4> without branches, for SIMD lanes (dq/dlb_lanes.hpp,
+/// motor_pga/motor_lanes.hpp): the same operations in the same order. Returns whether the filter
+/// decides; `negative` is then whether a.b < 0.
+template <class S>
+[[gnu::always_inline]] inline bool filtered_dot4_lane(S a0, S a1, S a2, S a3, S b0, S b1, S b2, S b3, bool& negative) {
+  const S p0 = a0 * b0, p1 = a1 * b1, p2 = a2 * b2, p3 = a3 * b3;
+  const S dot = S(0) + p0 + p1 + p2 + p3;
+  const S size = S(0) + std::abs(p0) + std::abs(p1) + std::abs(p2) + std::abs(p3);
+  constexpr S u = std::numeric_limits<S>::epsilon() / 2;
+  const S bound = S(2 * 4) * u * size + S(2 * 4) * std::numeric_limits<S>::denorm_min();
+  negative = dot < -bound;
+  return (size <= std::numeric_limits<S>::max()) & ((dot > bound) | negative);
+}
+
 /// The sign of a . b of two quaternions (or any 4-vectors) as given, decided exactly.
 template <class S>
 int hemisphere_sign(const std::array<S, 4>& a, const std::array<S, 4>& b) {

@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+
+#include <rotorcert/impl_abi.h>
 
 namespace rotorcert::runtime {
 
@@ -54,6 +57,16 @@ void in_lanes_or_checked(std::size_t n, const S* a, std::size_t a_stride, const 
                                          checked(first + l);
                                      }
                                    });
+}
+
+/// The store of in_lanes_or_checked() for kernels whose `out[c][lane]` holds the Out output
+/// scalars as the ABI lays them out: element e's at out + Out e, status RC_OK.
+template <std::size_t Out, class S>
+auto copy_lane_outputs(S* out, std::uint8_t* status) {
+  return [out, status](std::size_t e, const auto& lanes, std::size_t l) {
+    for (std::size_t c = 0; c < Out; ++c) out[Out * e + c] = lanes.out[c][l];
+    status[e] = RC_OK;
+  };
 }
 
 }  // namespace rotorcert::runtime
