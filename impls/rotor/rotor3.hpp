@@ -302,7 +302,68 @@ bool determinant_is_positive(const impl::Mat3<S>& m) {
   return sum > 0;
 }
 
+/// ||X^T X - I||_F^2: MAT-3's delta, squared, as computed in S.
+template <class S>
+S orthonormality_defect2(const impl::Mat3<S>& x) {
+  S defect = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      S g = i == j ? S(-1) : S(0);
+      for (int k = 0; k < 3; ++k) g += at(x, k, i) * at(x, k, j);
+      defect += g * g;
+    }
+  return defect;
+}
+
 }  // namespace matrix_detail
+
+/// Shepperd's quaternion of a matrix x that is a rotation or the polar factor's stand-in
+/// (MAT-2): the largest of 4w^2, 4x^2, 4y^2, 4z^2 (trace or a diagonal entry) is the pivot, so
+/// no division is by a small number. Read out as Phi of the normalised quaternion; nullopt
+/// where the quaternion is not a rotation (zero or non-finite).
+template <class S>
+std::optional<Rotor3<S>> shepperd_rotor(const impl::Mat3<S>& x) {
+  using matrix_detail::at;
+  const S m00 = at(x, 0, 0), m11 = at(x, 1, 1), m22 = at(x, 2, 2);
+  const S trace = m00 + m11 + m22;
+  impl::Quat<S> q;  // [x, y, z, w]
+  if (trace >= m00 && trace >= m11 && trace >= m22) {
+    const S w = S(0.5) * std::sqrt(S(1) + trace), f = S(0.25) / w;
+    q = {(at(x, 2, 1) - at(x, 1, 2)) * f, (at(x, 0, 2) - at(x, 2, 0)) * f, (at(x, 1, 0) - at(x, 0, 1)) * f, w};
+  } else if (m00 >= m11 && m00 >= m22) {
+    const S v = S(0.5) * std::sqrt(S(1) + m00 - m11 - m22), f = S(0.25) / v;
+    q = {v, (at(x, 0, 1) + at(x, 1, 0)) * f, (at(x, 0, 2) + at(x, 2, 0)) * f, (at(x, 2, 1) - at(x, 1, 2)) * f};
+  } else if (m11 >= m22) {
+    const S v = S(0.5) * std::sqrt(S(1) - m00 + m11 - m22), f = S(0.25) / v;
+    q = {(at(x, 0, 1) + at(x, 1, 0)) * f, v, (at(x, 1, 2) + at(x, 2, 1)) * f, (at(x, 0, 2) - at(x, 2, 0)) * f};
+  } else {
+    const S v = S(0.5) * std::sqrt(S(1) - m00 - m11 + m22), f = S(0.25) / v;
+    q = {(at(x, 0, 2) + at(x, 2, 0)) * f, (at(x, 1, 2) + at(x, 2, 1)) * f, v, (at(x, 1, 0) - at(x, 0, 1)) * f};
+  }
+  if (!is_rotation(q)) return std::nullopt;
+  q = normalized(q);
+  return Rotor3<S>{q[3], -q[0], -q[1], -q[2]};
+}
+
+/// The cheap test of MAT-3's fast path: M is finite, its entries at most 2 in magnitude, det M
+/// (cofactor expansion) above 1/2 and delta = ||M^T M - I||_F at most `tolerance`. Such an M is a
+/// rotation to within delta, so Shepperd's quaternion of M as given is within about 0.66 delta
+/// of the polar factor's (first order; sampled with rotations near pi) plus a few roundings,
+/// inside MAT-3's strict bar 16 eps + 2 delta, and the polar iteration with its scaling is
+/// not needed. nullopt: the input needs rotor_from_matrix_wide (or is not a rotation).
+template <class S>
+std::optional<Rotor3<S>> rotor_from_near_orthonormal_matrix(const impl::Mat3<S>& x, S tolerance) {
+  using matrix_detail::at;
+  bool bounded = true;  // also false for NaN
+  for (S e : x) bounded = bounded & (std::abs(e) <= S(2));
+  if (!bounded) return std::nullopt;
+  const S det = at(x, 0, 0) * (at(x, 1, 1) * at(x, 2, 2) - at(x, 1, 2) * at(x, 2, 1)) -
+                at(x, 0, 1) * (at(x, 1, 0) * at(x, 2, 2) - at(x, 1, 2) * at(x, 2, 0)) +
+                at(x, 0, 2) * (at(x, 1, 0) * at(x, 2, 1) - at(x, 1, 1) * at(x, 2, 0));
+  if (!(det > S(0.5))) return std::nullopt;
+  if (!(matrix_detail::orthonormality_defect2(x) <= tolerance * tolerance)) return std::nullopt;
+  return shepperd_rotor(x);
+}
 
 /// rotor_from_matrix in one format (binary64 for every caller).
 template <class S>
@@ -339,14 +400,7 @@ std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
       cof = cofactors(x, det);
     }
   }
-  S defect = 0;  // ||X^T X - I||_F
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      S g = i == j ? S(-1) : S(0);
-      for (int k = 0; k < 3; ++k) g += at(x, k, i) * at(x, k, j);
-      defect += g * g;
-    }
-  if (std::sqrt(defect) > S(8) * kEps<S>) {
+  if (std::sqrt(matrix_detail::orthonormality_defect2(x)) > S(8) * kEps<S>) {
     for (int iteration = 0; iteration < 60; ++iteration) {
       if (iteration > 0) cof = cofactors(x, det);
       if (!(det > 0)) break;
@@ -361,34 +415,16 @@ std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
       if (std::sqrt(change) <= S(16) * kEps<S>) break;
     }
   }
-  // Shepperd: take the largest of 4w^2, 4x^2, 4y^2, 4z^2 (trace or a diagonal entry) as pivot.
-  const S m00 = at(x, 0, 0), m11 = at(x, 1, 1), m22 = at(x, 2, 2);
-  const S trace = m00 + m11 + m22;
-  impl::Quat<S> q;  // [x, y, z, w]
-  if (trace >= m00 && trace >= m11 && trace >= m22) {
-    const S w = S(0.5) * std::sqrt(S(1) + trace), f = S(0.25) / w;
-    q = {(at(x, 2, 1) - at(x, 1, 2)) * f, (at(x, 0, 2) - at(x, 2, 0)) * f, (at(x, 1, 0) - at(x, 0, 1)) * f, w};
-  } else if (m00 >= m11 && m00 >= m22) {
-    const S v = S(0.5) * std::sqrt(S(1) + m00 - m11 - m22), f = S(0.25) / v;
-    q = {v, (at(x, 0, 1) + at(x, 1, 0)) * f, (at(x, 0, 2) + at(x, 2, 0)) * f, (at(x, 2, 1) - at(x, 1, 2)) * f};
-  } else if (m11 >= m22) {
-    const S v = S(0.5) * std::sqrt(S(1) - m00 + m11 - m22), f = S(0.25) / v;
-    q = {(at(x, 0, 1) + at(x, 1, 0)) * f, v, (at(x, 1, 2) + at(x, 2, 1)) * f, (at(x, 0, 2) - at(x, 2, 0)) * f};
-  } else {
-    const S v = S(0.5) * std::sqrt(S(1) - m00 - m11 + m22), f = S(0.25) / v;
-    q = {(at(x, 0, 2) + at(x, 2, 0)) * f, (at(x, 1, 2) + at(x, 2, 1)) * f, v, (at(x, 1, 0) - at(x, 0, 1)) * f};
-  }
-  if (!is_rotation(q)) return std::nullopt;
-  q = normalized(q);
-  return Rotor3<S>{q[3], -q[0], -q[1], -q[2]};
+  return shepperd_rotor(x);
 }
 
 /// The rotor of a matrix M: the unit R with R e_c ~R = column c of M's orthogonal polar factor
 /// (the nearest rotation, MAT-3), returned as Phi of the quaternion from Shepperd's largest-
 /// pivot method (MAT-2). det <= 0, zero or non-finite M: nullopt.
 ///
-/// The polar factor comes from Higham's scaled Newton iteration X <- (g X + X^-T / g) / 2; a
-/// matrix that is already orthonormal to a few eps skips it. Range (MAT-3 lets det M be any
+/// A rotation rounded to the format (the cheap test of rotor_from_near_orthonormal_matrix) goes
+/// straight to Shepperd. Any other M: the polar factor comes from Higham's scaled Newton
+/// iteration X <- (g X + X^-T / g) / 2. Range (MAT-3 lets det M be any
 /// positive number, so the singular values may spread over the whole exponent range):
 ///  - X^-T and g are never formed: with C = cof(X) = det X^-T, g = r / sqrt(det) and
 ///    X^-T / g = C / (r sqrt(det)), r = sqrt(|C|_F / |X|_F), all finite for any det > 0;
@@ -401,16 +437,20 @@ std::optional<Rotor3<S>> rotor_from_matrix_wide(const impl::Mat3<S>& matrix) {
 ///  - binary32 input runs in binary64, whose range covers every product of three binary32.
 template <class S>
 std::optional<Rotor3<S>> rotor_from_matrix(const impl::Mat3<S>& matrix) {
+  // The fast path's tolerance is 8 eps of the input's format: a rotation rounded to the format
+  // passes it, and Shepperd's error on it (about 5 eps) is inside the strict bar whatever delta.
   if constexpr (std::is_same_v<S, float>) {
     impl::Mat3<double> wide;
     for (int i = 0; i < 9; ++i) wide[i] = matrix[i];
-    const std::optional<Rotor3<double>> r = rotor_from_matrix(wide);
+    std::optional<Rotor3<double>> r = rotor_from_near_orthonormal_matrix(wide, 8.0 * kEps<float>);
+    if (!r) r = rotor_from_matrix_wide(wide);
     if (!r) return std::nullopt;
     const impl::Quat<float> q{float(r->e23), float(r->e31), float(r->e12), float(r->s)};
     if (!is_rotation(q)) return std::nullopt;
     const impl::Quat<float> n = normalized(q);
     return Rotor3<float>{n[3], n[0], n[1], n[2]};
   } else {
+    if (std::optional<Rotor3<S>> r = rotor_from_near_orthonormal_matrix(matrix, S(8) * kEps<S>)) return r;
     return rotor_from_matrix_wide(matrix);
   }
 }
