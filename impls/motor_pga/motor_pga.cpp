@@ -21,6 +21,7 @@
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/lane_blocks.hpp>
 #include <rotorcert/runtime/scalar_real_part_log.hpp>
+#include <rotorcert/runtime/target_clones.hpp>
 #include <rotorcert/impl_table.hpp>
 
 #include "motor.hpp"
@@ -252,19 +253,17 @@ struct MotorPga {
     return Status::ok;
   }
 
-  /// The batch of dq_apply_point: binary32 elements in SIMD lanes (motor_lanes.hpp: the same
-  /// bits), blocks of 16, then blocks of 4 padded with copies of the last element; a lane that is
-  /// not ok, and every binary64 element, by the checked function above.
-  static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out, std::uint8_t* status) {
+  /// The batch of dq_apply_point, as dq's (dq.cpp): every element in SIMD lanes (motor_lanes.hpp:
+  /// the same bits), blocks of 16, then blocks of 4 padded with copies of the last element; a lane
+  /// that is not ok by the checked function above.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out,
+                                                              std::uint8_t* status) {
     using Checked = rci::detail::Elementwise<&MotorPga::dq_apply_point, decltype(&MotorPga::dq_apply_point)>;
-    if constexpr (std::is_same_v<S, float>) {
-      runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes, 8>(
-          n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-          runtime::copy_lane_outputs<3>(out, status),
-          [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
-      return 0;
-    }
-    return Checked::run(n, d, p, out, status);
+    runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes, 8>(
+        n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
+        runtime::copy_lane_outputs<3>(out, status),
+        [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
+    return 0;
   }
 
   static Status dq_normalize(const rci::DualQuat<S>& d, rci::DualQuat<S>& out) {
@@ -294,11 +293,12 @@ struct MotorPga {
     return Status::ok;
   }
 
-  /// The batch of dq_blend, as dq's (dq.cpp): binary32 with k <= kLaneInfluences in SIMD lanes
+  /// The batch of dq_blend, as dq's (dq.cpp): k <= kLaneInfluences in SIMD lanes
   /// (motor_lanes.hpp: the same bits as the checked path), blocks of 16, then blocks of 4 padded
   /// with copies of the last element; else blend_ordinary() per element; a lane or element that
   /// fails its cheap tests by the checked element function.
-  static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out, std::uint8_t* status) {
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out,
+                                                        std::uint8_t* status) {
     const auto checked = [&](std::size_t e) {
       rci::detail::blend<&MotorPga::dq_blend, S, 8, 8>(1, k, d + 8 * k * e, w + k * e, out + 8 * e, status + e);
     };
@@ -307,17 +307,15 @@ struct MotorPga {
       std::copy(o.begin(), o.end(), out + 8 * e);
       status[e] = RC_OK;
     };
-    if constexpr (std::is_same_v<S, float>) {
-      if (k > 0 && k <= kLaneInfluences) {
-        runtime::in_lanes_or_checked<rotorcert::motor_lanes::BlendLanes, 8 * kLaneInfluences>(
-            n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
-            [&](std::size_t e, const auto& lanes, std::size_t l) {
-              store(e, Motor<S>{lanes.out[0][l], lanes.out[1][l], lanes.out[2][l], lanes.out[3][l], lanes.out[4][l],
-                                lanes.out[5][l], lanes.out[6][l], lanes.out[7][l]});
-            },
-            checked);
-        return 0;
-      }
+    if (k > 0 && k <= kLaneInfluences) {
+      runtime::in_lanes_or_checked<rotorcert::motor_lanes::BlendLanes, 8 * kLaneInfluences>(
+          n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
+          [&](std::size_t e, const auto& lanes, std::size_t l) {
+            store(e, Motor<S>{lanes.out[0][l], lanes.out[1][l], lanes.out[2][l], lanes.out[3][l], lanes.out[4][l],
+                              lanes.out[5][l], lanes.out[6][l], lanes.out[7][l]});
+          },
+          checked);
+      return 0;
     }
     for (std::size_t i = 0; i < n; ++i) {
       Motor<S> m;

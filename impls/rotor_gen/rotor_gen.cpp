@@ -29,6 +29,7 @@
 #include <rotorcert/impl_table.hpp>
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
+#include <rotorcert/runtime/target_clones.hpp>
 
 #include "../rotor/rotor3.hpp"
 #include "rotor_gen_kernels.hpp"
@@ -45,24 +46,7 @@ namespace gen = rotorcert::rotor_gen;
 
 constexpr std::size_t kBlock = 64;
 
-// The batch functions are compiled twice, for AVX2 and for the x86-64 baseline (SSE2), and the
-// loader picks one by the CPU (GNU ifunc), as libraries with runtime dispatch do (rotor_simd does it
-// with Highway). AVX2 holds four doubles per vector where SSE2 holds two. Without FMA (not part of
-// the "avx2" target) both clones round every operation alike, so they return the same bits.
-// Elsewhere, and under sanitizers, one baseline version.
-#if defined(__x86_64__) && defined(__ELF__) && (!defined(__clang__) || __clang_major__ >= 14) && \
-    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define ROTORCERT_GEN_TARGETS
-#endif
-#endif
-#ifndef ROTORCERT_GEN_TARGETS
-#define ROTORCERT_GEN_TARGETS __attribute__((target_clones("avx2", "default")))
-#endif
-#else
-#define ROTORCERT_GEN_TARGETS
-#endif
+// The batch functions are compiled for AVX2 and for the baseline (runtime/target_clones.hpp).
 
 // ---- blocks of the ABI's arrays as algebra elements (LAYOUT-1 [x, y, z, w]; Phi of Q2R-1) --------
 
@@ -149,7 +133,7 @@ struct RotorGen : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
 
   /// NORM-1: R (1 / sqrt(<R ~R>_0)): one division, not four (the reciprocal's rounding adds u/2
   /// per component, within eps4).
-  ROTORCERT_GEN_TARGETS static int normalize_batch(std::size_t n, const S* q, S* out_q, std::uint8_t* status) {
+  ROTORCERT_TARGET_CLONES static int normalize_batch(std::size_t n, const S* q, S* out_q, std::uint8_t* status) {
     QuatBlock<S> in, result;
     Flag flags[kBlock];
     for (std::size_t first = 0; first < n; first += kBlock) {
@@ -168,7 +152,7 @@ struct RotorGen : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   }
 
   /// COMPOSE-1: Phi(a) Phi(b), no normalisation; |a|^2 and |b|^2 ordinary.
-  ROTORCERT_GEN_TARGETS static int compose_batch(std::size_t n, const S* a, const S* b, S* out_q,
+  ROTORCERT_TARGET_CLONES static int compose_batch(std::size_t n, const S* a, const S* b, S* out_q,
                                                  std::uint8_t* status) {
     QuatBlock<S> in_a, in_b, result;
     Flag flags[kBlock];
@@ -190,7 +174,7 @@ struct RotorGen : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   /// APPLY-1: <R v ~R>_1 / <R ~R>_0. |R|^2 and |v|^2 ordinary: every term of the sandwich is then
   /// within 2^+-3W of |R|^2 |v|, so nothing overflows and what underflows is negligible (v = 0
   /// takes the slow path, which returns it exactly).
-  ROTORCERT_GEN_TARGETS static int apply_vector_batch(std::size_t n, const S* q, const S* v, S* out_v,
+  ROTORCERT_TARGET_CLONES static int apply_vector_batch(std::size_t n, const S* q, const S* v, S* out_v,
                                                       std::uint8_t* status) {
     QuatBlock<S> in_q;
     VecBlock<S> in_v, result;
@@ -218,7 +202,7 @@ struct RotorGen : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   /// NLERP-1: R_A/|R_A| + t (R_B'/|R_B| - R_A/|R_A|), normalised; R_B' = -R_B iff a.b < 0. The fast
   /// path also asks |t| <= 2^16 (so the sum cannot overflow and needs no 1/max(1, |t|) scaling)
   /// and a decided hemisphere; R_A = R_B' gives R_A exactly (EDGE-1).
-  ROTORCERT_GEN_TARGETS static int nlerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out_q,
+  ROTORCERT_TARGET_CLONES static int nlerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out_q,
                                                std::uint8_t* status) {
     QuatBlock<S> in_a, in_b, result;
     Flag flags[kBlock];
@@ -257,7 +241,7 @@ struct RotorGen : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   /// library's atan and sincos (scalar calls), pass 3 exp and the product. |B|^2 ordinary in the
   /// fast path: D = +-1 (B = 0, e.g. R_A = R_B', EDGE-1) takes the slow path, which returns R_A
   /// exactly.
-  ROTORCERT_GEN_TARGETS static int slerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out_q,
+  ROTORCERT_TARGET_CLONES static int slerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out_q,
                                                std::uint8_t* status) {
     QuatBlock<S> in_a, in_b, unit_a, result;
     // Per element: |B|/s of D, the unit bivector B/|B|, then cos and sin of t theta.
