@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <rotorcert/report/render.hpp>
@@ -242,6 +243,73 @@ TEST(SpeedSection, OperationCountsOfTheGeneratedRotorStandBesideBothTimes) {
   json report = {{"sections", {{"speed", s}}}};
   EXPECT_NE(rotorcert::report::render_html(report).find("24 mul + 18 add (42)"), std::string::npos);
   EXPECT_NE(rotorcert::report::render_markdown(report).find("| compose | float | 24 mul + 18 add (42) | 28 |"), std::string::npos);
+}
+
+const json* parity_row(const json& s, const std::string& family, const std::string& impl, const std::string& what) {
+  for (const json& r : s.at("parity").at("rows"))
+    if (r.at("family") == family && r.at("impl") == impl && r.at("what") == what) return &r;
+  return nullptr;
+}
+
+// Issue 18's bars: each implementation's time over its quaternion baseline's from the same run.
+TEST(SpeedSection, ParityComparesEachImplementationWithItsQuaternionBaseline) {
+  RC_CLAUSE("REPORT-2");
+  json doc = bench_document();
+  auto& runs = doc["benchmarks"];
+  runs.push_back(op_run("glm_quat", "float", "compose", 4096, 10.0, 28.0, 48.0));
+  runs.push_back(op_run("rotor_gen", "float", "compose", 4096, 10.5, 28.0, 48.0));  // 1.05 <= 1.1: met
+  runs.push_back(op_run("glm_quat", "float", "slerp", 4096, 20.0, 100.0, 52.0));
+  runs.push_back(op_run("rotor_gen", "float", "slerp", 4096, 30.0, 100.0, 52.0));    // 1.5 > 1.1: missed
+  runs.push_back(op_run("dq", "float", "compose", 4096, 16.0, 28.0, 48.0));          // 1.6 > 1.5: missed
+  runs.push_back(op_run("glm_quat", "float", "normalize", 4096, 4.0, 8.0, 32.0));
+  runs.push_back(op_run("dq", "float", "normalize", 4096, 5.0, 8.0, 32.0));          // 1.25: met
+  runs.push_back(op_run("glm_quat", "float", "blend_qlb", 4096, 50.0, 62.0, 97.0));
+  runs.push_back(op_run("dq", "float", "dq_blend", 4096, 90.0, 112.0, 177.0));        // 1.8 <= 2: met
+  runs.push_back(op_run("motor_pga", "float", "dq_blend", 4096, 110.0, 112.0, 177.0)); // 2.2: missed
+  runs.push_back(op_run("rotor_m2", "float", "compose", 1, 25.0, 28.0, 48.0));
+  runs.push_back(op_run("rotor_simd", "float", "compose", 1, 40.0, 28.0, 48.0));  // +15 ns: met
+  runs.push_back(op_run("rotor_m2", "float", "exp", 1, 15.0, 40.0, 28.0));
+  runs.push_back(op_run("rotor_simd", "float", "exp", 1, 90.0, 40.0, 28.0));      // +75 ns: missed
+  const json s = speed_section(doc, {}, "bench.json");
+
+  const json* gen_compose = parity_row(s, "GEN-PARITY", "rotor_gen", "compose");
+  ASSERT_NE(gen_compose, nullptr);
+  EXPECT_DOUBLE_EQ(gen_compose->at("slowdown").get<double>(), 1.05);
+  EXPECT_TRUE(gen_compose->at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "GEN-PARITY", "rotor_gen", "slerp")->at("met").get<bool>());
+  // A rotor_gen op without a glm_quat time of the same run has no row.
+  EXPECT_EQ(parity_row(s, "GEN-PARITY", "rotor_gen", "nlerp"), nullptr);
+  EXPECT_DOUBLE_EQ(parity_row(s, "SCALAR-1.5", "dq", "compose")->at("slowdown").get<double>(), 1.6);
+  EXPECT_FALSE(parity_row(s, "SCALAR-1.5", "dq", "compose")->at("met").get<bool>());
+  EXPECT_TRUE(parity_row(s, "SCALAR-1.5", "dq", "normalize")->at("met").get<bool>());
+  EXPECT_DOUBLE_EQ(parity_row(s, "DLB-2", "dq", "dq_blend")->at("slowdown").get<double>(), 1.8);
+  EXPECT_TRUE(parity_row(s, "DLB-2", "dq", "dq_blend")->at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "DLB-2", "motor_pga", "dq_blend")->at("met").get<bool>());
+  // Frames of bench_document(): medium DQS 400 vs LBS 300, simple 9 vs 10; rotor_simd 250 vs 300 is
+  // 0.83 of the QLB frame, not the quarter that the bar asks.
+  EXPECT_DOUBLE_EQ(parity_row(s, "DQS-FRAME", "dq", "medium")->at("slowdown").get<double>(), 400.0 / 300.0);
+  EXPECT_TRUE(parity_row(s, "DQS-FRAME", "dq", "medium")->at("met").get<bool>());
+  EXPECT_TRUE(parity_row(s, "DQS-FRAME", "dq", "simple")->at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "SIMD-FRAME", "rotor_simd", "medium")->at("met").get<bool>());
+  EXPECT_DOUBLE_EQ(parity_row(s, "SIMD-SINGLE", "rotor_simd", "compose")->at("excess_ns").get<double>(), 15.0);
+  EXPECT_TRUE(parity_row(s, "SIMD-SINGLE", "rotor_simd", "compose")->at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "SIMD-SINGLE", "rotor_simd", "exp")->at("met").get<bool>());
+
+  // Family summaries: counts and the worst row.
+  std::map<std::string, json> families;
+  for (const json& f : s.at("parity").at("families")) families[f.at("id").get<std::string>()] = f;
+  EXPECT_EQ(families.at("SCALAR-1.5").at("met"), 1);
+  EXPECT_EQ(families.at("SCALAR-1.5").at("rows"), 2);
+  EXPECT_EQ(families.at("SCALAR-1.5").at("worst").at("what"), "compose");
+  EXPECT_EQ(families.at("SIMD-SINGLE").at("worst").at("what"), "exp");
+  EXPECT_EQ(families.at("DLB-2").at("worst").at("impl"), "motor_pga");
+
+  json report = {{"sections", {{"speed", s}}}};
+  const std::string md = rotorcert::report::render_markdown(report);
+  EXPECT_NE(md.find("| SCALAR-1.5 | `dq` | float | compose |"), std::string::npos) << md;
+  EXPECT_NE(md.find("+75 ns"), std::string::npos);
+  const std::string html = rotorcert::report::render_html(report);
+  EXPECT_NE(html.find("Parity with the quaternion code"), std::string::npos);
 }
 
 TEST(SpeedSection, NotABenchmarkDocumentIsAnError) {

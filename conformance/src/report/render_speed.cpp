@@ -48,6 +48,30 @@ std::string target_verdict(const json& t) {
   return "missed by " + ratio_text(num(t, "missed_by"));
 }
 
+/// A parity row's measure: its slowdown against the baseline, or its excess in ns (SIMD-SINGLE).
+std::string parity_measure_text(const json& r) {
+  if (r.is_object() && r.contains("excess_ns")) {
+    const double e = num(r, "excess_ns");
+    return std::isfinite(e) ? (e >= 0 ? "+" : "") + fmt3(e) + " ns" : "\u2014";
+  }
+  return ratio_text(num(r, "slowdown"));
+}
+std::string parity_verdict(const json& r) {
+  if (!r.is_object() || !r.contains("met") || !r["met"].is_boolean()) return "not measured";
+  return r["met"].get<bool>() ? "met" : "missed";
+}
+/// "rotor_m1 float compose: 2.1x" for a family's worst row.
+std::string parity_worst_text(const json& family) {
+  const json& w = obj_at(family, "worst");
+  if (!w.is_object() || w.empty()) return "\u2014";
+  return str(w, "impl") + " " + str(w, "scalar") + " " + str(w, "what") + ": " + parity_measure_text(w);
+}
+const char* kParityIntro =
+    "Issue 18's bars for each implementation against the quaternion code it is isomorphic to: the "
+    "implementation's time over the baseline's (ns per element at 4096 for ops, the median frame for frames; "
+    "SIMD-SINGLE: the extra ns of a one-element call over rotor_m2's), both from this run. A row exists only "
+    "where both were measured (the quick run has no single-element calls).";
+
 /// Rows of the ops list grouped: op -> (impl/scalar -> n -> row).
 using OpIndex = std::map<std::string, std::map<std::string, std::map<long long, const json*>>>;
 OpIndex index_ops(const json& section) {
@@ -199,6 +223,34 @@ void render_speed_html(std::ostream& out, const json& s) {
   }
   out << "</tbody>\n</table>\n";
 
+  // Parity families (issue 18), each with its rows folded away.
+  const json& parity = obj_at(s, "parity");
+  if (!arr(parity, "families").empty()) {
+    out << "<h3>Parity with the quaternion code</h3>\n<p class=\"muted\">" << esc(kParityIntro)
+        << "</p>\n<table class=\"speed-parity\">\n<thead><tr><th>Bar</th><th>Comparison</th><th>Required</th>"
+           "<th>Met</th><th>Worst</th></tr></thead>\n<tbody>\n";
+    for (const json& f : arr(parity, "families"))
+      out << "<tr><td>" << esc(str(f, "id")) << "</td><td>" << esc(str(f, "what")) << "</td><td>" << esc(str(f, "bar"))
+          << "</td><td>" << num_text(f, "met") << " of " << num_text(f, "rows") << "</td><td>"
+          << esc(parity_worst_text(f)) << "</td></tr>\n";
+    out << "</tbody>\n</table>\n";
+    for (const json& f : arr(parity, "families")) {
+      if (!(num(f, "rows", 0) > 0)) continue;
+      out << "<details><summary>" << esc(str(f, "id")) << ": every row (" << esc(str(f, "unit"))
+          << ")</summary>\n<table class=\"speed-parity-rows\">\n<thead><tr><th>Table</th><th>Scalar</th><th>Op or "
+             "scene</th><th>Time</th><th>Baseline</th><th>Measure</th><th>Verdict</th></tr></thead>\n<tbody>\n";
+      for (const json& r : arr(parity, "rows")) {
+        if (str(r, "family") != str(f, "id")) continue;
+        const std::string v = parity_verdict(r);
+        out << "<tr><td><code>" << esc(str(r, "impl")) << "</code></td><td>" << esc(str(r, "scalar")) << "</td><td>"
+            << esc(str(r, "what")) << "</td><td>" << num_text(r, "time") << "</td><td>" << num_text(r, "baseline")
+            << "</td><td>" << esc(parity_measure_text(r)) << "</td><td><span class=\"badge oc-"
+            << (v == "met" ? "PASS" : "FAIL") << "\">" << esc(v) << "</span></td></tr>\n";
+      }
+      out << "</tbody>\n</table>\n</details>\n";
+    }
+  }
+
   // Frame pipeline and the paper's claim.
   out << "<h3>Frame pipeline (sample two clips, blend, globals, skinning transforms, CPU skin)</h3>\n";
   if (arr(s, "frames").empty()) {
@@ -335,6 +387,24 @@ void render_speed_markdown(std::ostream& out, const json& s) {
   for (const json& t : arr(s, "targets"))
     row(out, {cell(str(t, "what")), ratio_text(num(t, "ratio")), "\u2265 " + ratio_text(num(t, "target")), cell(target_verdict(t))});
   out << "\n";
+  const json& parity = obj_at(s, "parity");
+  if (!arr(parity, "families").empty()) {
+    out << cell(kParityIntro) << "\n\n";
+    header(out, {"Bar", "Comparison", "Required", "Met", "Worst"});
+    for (const json& f : arr(parity, "families"))
+      row(out, {cell(str(f, "id")), cell(str(f, "what")), cell(str(f, "bar")),
+                num_text(f, "met") + " of " + num_text(f, "rows"), cell(parity_worst_text(f))});
+    out << "\n";
+    bool any_missed = false;
+    for (const json& r : arr(parity, "rows")) {
+      if (parity_verdict(r) != "missed") continue;
+      if (!any_missed) header(out, {"Missed", "Table", "Scalar", "Op or scene", "Time", "Baseline", "Measure"});
+      any_missed = true;
+      row(out, {cell(str(r, "family")), code(str(r, "impl")), cell(str(r, "scalar")), cell(str(r, "what")),
+                num_text(r, "time"), num_text(r, "baseline"), cell(parity_measure_text(r))});
+    }
+    if (any_missed) out << "\n";
+  }
   if (!arr(s, "paper_claim").empty()) {
     header(out, {"Character", "Scalar", "QLB \u00b5s", "DQB \u00b5s", "Fastest GA rotor", "\u00b5s", "vs QLB", "vs DQB", "Paper's claim"});
     for (const json& c : arr(s, "paper_claim"))

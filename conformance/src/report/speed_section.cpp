@@ -266,6 +266,7 @@ json speed_section(const json& bench, const std::vector<json>& certificates, con
     by_scene[{f["scene"], f["scalar"]}][f["impl"] + " " + f["technique"]] = t;
   }
   section["frames"] = frames;
+  section["parity"] = parity_section(ops, frames);
 
   // The paper's claim: GA rotors (Method 1, Method 2, the SIMD rotor, the generated rotor; the
   // fastest of them) take less time per frame than QLB (glm_quat LBS) and DQB (dq DQS).

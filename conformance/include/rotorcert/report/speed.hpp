@@ -18,6 +18,11 @@
 //                skinning the vertices, or null), "joints", "vertices"}],
 //    "paper_claim": [{"scene", "scalar", "qlb_us", "dqb_us", "rotor", "rotor_us", "vs_qlb", "vs_dqb", "holds"}],
 //    "accuracy_vs_speed": [{"impl", "scalar", "op", "n", "ns_per_element", "max_eps", "p99_eps"}],
+//    "parity": {"families": [{"id", "what", "unit", "bar", "met", "rows", "worst": row or null}],
+//               "rows": [{"family", "impl", "scalar", "what" (op or scene), "time", "baseline", "kernel_key",
+//                         "baseline_key", "slowdown" = time / baseline (or "excess_ns" = time - baseline for
+//                         SIMD-SINGLE), "bar", "met"}]}
+//               (issue 18's bars; a row only where both times were measured in this run),
 //    "notes": [text]}
 // Roofline: a kernel's bound is min(peak_flops / flops_per_element, bandwidth.triad / bytes_per_element)
 // at the streaming size (n >= 65536), and peak_flops / flops_per_element for batches that run
@@ -52,6 +57,9 @@ inline constexpr SpeedTarget kSpeedTargets[] = {
     {"SIMD-NLERP", "SIMD nlerp (QLB of two) vs glm::mix", "op/nlerp/rotor_simd/float/4096",
      "baseline/glm_mix/float/4096", 15.0},
 };
+
+/// sections.speed.parity from the section's "ops" and "frames" rows (speed_parity.cpp).
+nlohmann::json parity_section(const nlohmann::json& ops, const nlohmann::json& frames);
 
 /// sections.speed from a rotorcert_bench JSON document. `certificates` are the report's
 /// (accuracy per op); may be empty. Throws std::runtime_error when `bench` is not a Google
