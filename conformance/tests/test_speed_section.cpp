@@ -267,7 +267,10 @@ TEST(SpeedSection, ParityComparesEachImplementationWithItsQuaternionBaseline) {
   runs.push_back(op_run("dq", "float", "dq_blend", 4096, 90.0, 112.0, 177.0));        // 1.8 <= 2: met
   runs.push_back(op_run("motor_pga", "float", "dq_blend", 4096, 110.0, 112.0, 177.0)); // 2.2: missed
   runs.push_back(op_run("rotor_m2", "float", "compose", 1, 25.0, 28.0, 48.0));
-  runs.push_back(op_run("rotor_simd", "float", "compose", 1, 40.0, 28.0, 48.0));  // +15 ns: met
+  json simd_compose = op_run("rotor_simd", "float", "compose", 1, 40.0, 28.0, 48.0);  // +15 ns: met
+  // rotor_simd's label names the SIMD target it dispatched to, not "none".
+  simd_compose["label"] = "impl=rotor_simd scalar=float op=compose n=1 k=1 target=AVX2";
+  runs.push_back(simd_compose);
   runs.push_back(op_run("rotor_m2", "float", "exp", 1, 15.0, 40.0, 28.0));
   runs.push_back(op_run("rotor_simd", "float", "exp", 1, 90.0, 40.0, 28.0));      // +75 ns: missed
   const json s = speed_section(doc, {}, "bench.json");

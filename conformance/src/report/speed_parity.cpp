@@ -14,16 +14,14 @@ namespace {
 
 using json = nlohmann::json;
 
-/// The time of an op row ("impl/scalar/op/n" -> ns per element, default SIMD target only) or of a
-/// frame row ("scene/impl/scalar/technique" -> median us per frame).
+/// The time of an op row ("impl/scalar/op/n" -> ns per element, at the SIMD target the table
+/// dispatched to) or of a frame row ("scene/impl/scalar/technique" -> median us per frame).
 using Times = std::map<std::string, double>;
 
 Times op_times(const json& ops) {
   Times t;
   for (const json& r : ops) {
-    const std::string target = r.value("simd_target", "");
-    if (!(target.empty() || target == "none") || !r.contains("ns_per_element") || !r["ns_per_element"].is_number())
-      continue;
+    if (!r.contains("ns_per_element") || !r["ns_per_element"].is_number()) continue;
     t[r.value("impl", "") + "/" + r.value("scalar", "") + "/" + r.value("op", "") + "/" +
       std::to_string(r.value("n", 0LL))] = r["ns_per_element"].get<double>();
   }
