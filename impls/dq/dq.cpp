@@ -478,18 +478,18 @@ struct Dq {
     return Status::ok;
   }
 
-  /// The batch of dq_apply_point: every element in SIMD lanes (dlb_lanes.hpp: the same bits),
-  /// blocks of 16, then the rest in blocks of 4 padded with copies of its last element; a lane that
-  /// is not ok by the checked function above. The AVX2 clone (runtime/target_clones.hpp) holds 8
+  /// The batch of dq_apply_point: SIMD lanes (dlb_lanes.hpp: the same bits) in blocks of 16, then
+  /// of 4 (runtime/lane_blocks.hpp); a lane that is not ok, and the last n mod 4 elements, by the
+  /// checked function above. The AVX2 clone (runtime/target_clones.hpp) holds 8
   /// binary32 or 4 binary64 lanes per vector; the baseline clone does not vectorise binary64 (GCC
   /// 12: no vector type for its mix of int and double) and runs its lanes at scalar speed.
   ROTORCERT_TARGET_CLONES_FLAT static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out,
                                                               std::uint8_t* status) {
     using Checked = rci::detail::Elementwise<&Dq::dq_apply_point, decltype(&Dq::dq_apply_point)>;
-    runtime::in_lanes_or_checked<rotorcert::dq_lanes::ApplyPointLanes, 8>(
+    const auto checked = [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); };
+    runtime::in_lanes_or_checked<rotorcert::dq_lanes::ApplyPointLanes>(
         n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-        runtime::copy_lane_outputs<3>(out, status),
-        [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
+        runtime::copy_lane_outputs<3>(out, status), checked, checked);
     return 0;
   }
 
@@ -570,24 +570,17 @@ struct Dq {
     return Status::ok;
   }
 
-  /// The batch of dq_blend. k <= kLaneInfluences: every element in SIMD lanes (dlb_lanes.hpp: the
-  /// same bits as the checked path), blocks of 16, then the rest in blocks of 4 padded with copies
-  /// of its last element, so that short batches (the fuzzers' 1..8) run the same lane code as long
-  /// ones; a lane that is not ok goes to the checked element function. The clones' widths are
-  /// those of dq_apply_point_batch. More influences: dlb_ordinary() per element, the same bits too,
-  /// else the checked function.
+  /// The batch of dq_blend. k <= kLaneInfluences: SIMD lanes (dlb_lanes.hpp: the same bits as
+  /// the checked path) in blocks of 16, then of 4 (runtime/lane_blocks.hpp), with the clones'
+  /// widths of dq_apply_point_batch; a lane that is not ok goes to the checked element function.
+  /// The last n mod 4 elements, and every element of more influences: dlb_ordinary(), the same
+  /// bits too, else the checked function.
   ROTORCERT_TARGET_CLONES_FLAT static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out,
                                                         std::uint8_t* status) {
     const auto checked = [&](std::size_t e) {
       rci::detail::blend<&Dq::dq_blend, S, 8, 8>(1, k, d + 8 * k * e, w + k * e, out + 8 * e, status + e);
     };
-    if (k > 0 && k <= kLaneInfluences) {
-      runtime::in_lanes_or_checked<rotorcert::dq_lanes::DlbLanes, 8 * kLaneInfluences>(
-          n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
-          runtime::copy_lane_outputs<8>(out, status), checked);
-      return 0;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
+    const auto single = [&](std::size_t i) {
       Dual<S> r;
       if (k > 0 && dlb_ordinary(k, d + 8 * k * i, w + k * i, r)) [[likely]] {
         const rci::DualQuat<S> o = store(r);
@@ -596,7 +589,14 @@ struct Dq {
       } else {
         checked(i);
       }
+    };
+    if (k > 0 && k <= kLaneInfluences) {
+      runtime::in_lanes_or_checked<rotorcert::dq_lanes::DlbLanes>(
+          n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
+          runtime::copy_lane_outputs<8>(out, status), checked, single);
+      return 0;
     }
+    for (std::size_t i = 0; i < n; ++i) single(i);
     return 0;
   }
 

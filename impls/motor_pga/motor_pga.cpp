@@ -253,16 +253,16 @@ struct MotorPga {
     return Status::ok;
   }
 
-  /// The batch of dq_apply_point, as dq's (dq.cpp): every element in SIMD lanes (motor_lanes.hpp:
-  /// the same bits), blocks of 16, then blocks of 4 padded with copies of the last element; a lane
-  /// that is not ok by the checked function above.
+  /// The batch of dq_apply_point, as dq's (dq.cpp): SIMD lanes (motor_lanes.hpp: the same bits) in
+  /// blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements, by the checked
+  /// function above.
   ROTORCERT_TARGET_CLONES_FLAT static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out,
                                                               std::uint8_t* status) {
     using Checked = rci::detail::Elementwise<&MotorPga::dq_apply_point, decltype(&MotorPga::dq_apply_point)>;
-    runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes, 8>(
+    const auto checked = [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); };
+    runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes>(
         n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-        runtime::copy_lane_outputs<3>(out, status),
-        [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); });
+        runtime::copy_lane_outputs<3>(out, status), checked, checked);
     return 0;
   }
 
@@ -294,8 +294,8 @@ struct MotorPga {
   }
 
   /// The batch of dq_blend, as dq's (dq.cpp): k <= kLaneInfluences in SIMD lanes
-  /// (motor_lanes.hpp: the same bits as the checked path), blocks of 16, then blocks of 4 padded
-  /// with copies of the last element; else blend_ordinary() per element; a lane or element that
+  /// (motor_lanes.hpp: the same bits as the checked path), blocks of 16, then of 4; the last
+  /// n mod 4 elements and more influences by blend_ordinary() per element; a lane or element that
   /// fails its cheap tests by the checked element function.
   ROTORCERT_TARGET_CLONES_FLAT static int dq_blend_batch(std::size_t n, std::size_t k, const S* d, const S* w, S* out,
                                                         std::uint8_t* status) {
@@ -307,21 +307,22 @@ struct MotorPga {
       std::copy(o.begin(), o.end(), out + 8 * e);
       status[e] = RC_OK;
     };
+    const auto single = [&](std::size_t i) {
+      Motor<S> m;
+      if (k > 0 && blend_ordinary(k, d + 8 * k * i, w + k * i, m)) [[likely]] store(i, m);
+      else checked(i);
+    };
     if (k > 0 && k <= kLaneInfluences) {
-      runtime::in_lanes_or_checked<rotorcert::motor_lanes::BlendLanes, 8 * kLaneInfluences>(
+      runtime::in_lanes_or_checked<rotorcert::motor_lanes::BlendLanes>(
           n, d, 8 * k, w, k, [&](auto& lanes, const S* dd, const S* ww) { lanes.run(k, dd, ww); },
           [&](std::size_t e, const auto& lanes, std::size_t l) {
             store(e, Motor<S>{lanes.out[0][l], lanes.out[1][l], lanes.out[2][l], lanes.out[3][l], lanes.out[4][l],
                               lanes.out[5][l], lanes.out[6][l], lanes.out[7][l]});
           },
-          checked);
+          checked, single);
       return 0;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      Motor<S> m;
-      if (k > 0 && blend_ordinary(k, d + 8 * k * i, w + k * i, m)) [[likely]] store(i, m);
-      else checked(i);
-    }
+    for (std::size_t i = 0; i < n; ++i) single(i);
     return 0;
   }
 

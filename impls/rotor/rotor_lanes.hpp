@@ -1,0 +1,109 @@
+// NORM-1, COMPOSE-1 and APPLY-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
+// once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
+// functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
+// SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
+//
+// Data: the ABI's AoS arrays (quaternion e at q + 4 e as [x, y, z, w], LAYOUT-1; vector e at
+// v + 3 e) copied into lane arrays x[component][lane]. The rotor of q is Phi(q) = w - x e23 -
+// y e31 - z e12 (Q2R-1).
+//
+// Every lane computes exactly what RotorOps computes for its element when |q|^2 is ordinary
+// (runtime/ordinary_range.hpp: then safely_rescaled() is the identity, every component is finite
+// and q is not zero, so is_rotation() holds): the same IEEE operations in the same order, so the
+// same bits. A lane whose cheap test fails has `ok` false and the caller takes RotorOps for that
+// element; its other values are then meaningless. No branch depends on a lane's value, so the
+// loops vectorise (rotor_m2's CMakeLists.txt: -fno-math-errno for sqrt, -ffp-contract=off so that
+// no lane contracts a * b + c where the scalar code rounds twice).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include <rotorcert/runtime/ordinary_range.hpp>
+
+#include "rotor3.hpp"
+
+namespace rotorcert::rotor::lanes {
+
+/// A lane flag, 1 or 0: bool arrays do not vectorise.
+using Flag = std::int32_t;
+
+template <class S>
+inline bool ordinary(S norm2) {
+  return (norm2 >= runtime::OrdinaryRange<S>::kLo) & (norm2 <= runtime::OrdinaryRange<S>::kHi);
+}
+
+/// NORM-1 as RotorOps::normalize with Method2 computes it: Phi^-1(Phi(q/|q|)) = normalized(q),
+/// q / sqrt(x^2 + y^2 + z^2 + w^2), four divisions.
+template <class S, std::size_t L>
+struct NormalizeLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      ok[l] = Flag(ordinary(n2));
+      const S n = std::sqrt(n2);
+      for (std::size_t c = 0; c < 4; ++c) out[c][l] = x[c][l] / n;
+    }
+  }
+};
+
+/// COMPOSE-1 as RotorOps::compose computes it for ordinary |a|^2 and |b|^2: Phi^-1(gp(Phi(a),
+/// Phi(b))), rotor3.hpp's gp term for term.
+template <class S, std::size_t L>
+struct ComposeLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* a, const S* b) {
+    S x[4][L], y[4][L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 4; ++c) x[c][l] = a[4 * l + c], y[c][l] = b[4 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S na = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const S nb = y[0][l] * y[0][l] + y[1][l] * y[1][l] + y[2][l] * y[2][l] + y[3][l] * y[3][l];
+      ok[l] = Flag(ordinary(na) & ordinary(nb));
+      const Rotor3<S> p{x[3][l], -x[0][l], -x[1][l], -x[2][l]}, q{y[3][l], -y[0][l], -y[1][l], -y[2][l]};
+      const Rotor3<S> r = gp(p, q);
+      out[0][l] = -r.e23;
+      out[1][l] = -r.e31;
+      out[2][l] = -r.e12;
+      out[3][l] = r.s;
+    }
+  }
+};
+
+/// APPLY-1 as RotorOps::apply_vector computes it for ordinary |q|^2 and finite v:
+/// sandwich_vector(Phi(normalized(q)), v).
+template <class S, std::size_t L>
+struct ApplyVectorLanes {
+  S out[3][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* v) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    S x[4][L], p[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+      for (std::size_t c = 0; c < 3; ++c) p[c][l] = v[3 * l + c];
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const bool finite_v = (p[0][l] <= kMax) & (p[0][l] >= -kMax) & (p[1][l] <= kMax) & (p[1][l] >= -kMax) &
+                            (p[2][l] <= kMax) & (p[2][l] >= -kMax);
+      ok[l] = Flag(ordinary(n2) & finite_v);
+      const S n = std::sqrt(n2);
+      const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
+      const impl::Vec3<S> y = sandwich_vector(r, impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
+      for (std::size_t c = 0; c < 3; ++c) out[c][l] = y[c];
+    }
+  }
+};
+
+}  // namespace rotorcert::rotor::lanes
