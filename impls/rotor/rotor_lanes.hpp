@@ -68,7 +68,8 @@ struct ComposeLanes {
     for (std::size_t l = 0; l < L; ++l) {
       const S na = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
       const S nb = y[0][l] * y[0][l] + y[1][l] * y[1][l] + y[2][l] * y[2][l] + y[3][l] * y[3][l];
-      ok[l] = Flag(ordinary(na) & ordinary(nb));
+      const bool ordinary_a = ordinary(na), ordinary_b = ordinary(nb);  // & of calls: clang warns
+      ok[l] = Flag(ordinary_a & ordinary_b);
       const Rotor3<S> p{x[3][l], -x[0][l], -x[1][l], -x[2][l]}, q{y[3][l], -y[0][l], -y[1][l], -y[2][l]};
       const Rotor3<S> r = gp(p, q);
       out[0][l] = -r.e23;
@@ -97,7 +98,8 @@ struct ApplyVectorLanes {
       const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
       const bool finite_v = (p[0][l] <= kMax) & (p[0][l] >= -kMax) & (p[1][l] <= kMax) & (p[1][l] >= -kMax) &
                             (p[2][l] <= kMax) & (p[2][l] >= -kMax);
-      ok[l] = Flag(ordinary(n2) & finite_v);
+      const bool ordinary_q = ordinary(n2);
+      ok[l] = Flag(ordinary_q & finite_v);
       const S n = std::sqrt(n2);
       const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
       const impl::Vec3<S> y = sandwich_vector(r, impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
