@@ -398,6 +398,85 @@ S skin_input_ok(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t
   return largest_weight(w);
 }
 
+// ---- SoA lanes of the quaternion ops ----------------------------------------------------------------
+//
+// NORM-1, COMPOSE-1 and APPLY-1 for L elements at once (runtime/lane_blocks.hpp runs them): each
+// lane calls the functions above that the element functions call (operator/, operator*, rotate) on
+// its element, with the element functions' ordinary-case operations, so the same bits; no branch
+// depends on a lane, so the loops vectorise. A lane whose |q|^2 is not ordinary (which includes
+// zero, NaN and Inf) or whose vector is not finite has `ok` false and takes the element function.
+
+template <class S, std::size_t L>
+struct QuatLanes {
+  using Flag = std::int32_t;
+  S x[4][L];
+  Flag ok[L];
+  void load_quats(const S* q) {
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+  }
+  Quat<S> quat(std::size_t l) const { return {x[0][l], x[1][l], x[2][l], x[3][l]}; }
+  /// runtime::is_ordinary_square, with & so that it if-converts.
+  static bool ordinary(S n2) {
+    return (n2 >= runtime::OrdinaryRange<S>::kLo) & (n2 <= runtime::OrdinaryRange<S>::kHi);
+  }
+};
+
+/// NORM-1: q / sqrt(q.q), normalized()'s ordinary case.
+template <class S, std::size_t L>
+struct NormalizeLanes : QuatLanes<S, L> {
+  S out[4][L];
+  void run(const S* q, const S* /*unused*/) {
+    this->load_quats(q);
+    for (std::size_t l = 0; l < L; ++l) {
+      const Quat<S> a = this->quat(l);
+      const S n2 = dot(a, a);
+      this->ok[l] = this->ordinary(n2);
+      const Quat<S> u = a / std::sqrt(n2);
+      out[0][l] = u.x, out[1][l] = u.y, out[2][l] = u.z, out[3][l] = u.w;
+    }
+  }
+};
+
+/// COMPOSE-1: the Hamilton product a b as given.
+template <class S, std::size_t L>
+struct ComposeLanes : QuatLanes<S, L> {
+  S y[4][L], out[4][L];
+  void run(const S* a, const S* b) {
+    this->load_quats(a);
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 4; ++c) y[c][l] = b[4 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const Quat<S> p = this->quat(l), q{y[0][l], y[1][l], y[2][l], y[3][l]};
+      const bool ordinary_p = this->ordinary(dot(p, p)), ordinary_q = this->ordinary(dot(q, q));
+      this->ok[l] = ordinary_p & ordinary_q;
+      const Quat<S> r = p * q;
+      out[0][l] = r.x, out[1][l] = r.y, out[2][l] = r.z, out[3][l] = r.w;
+    }
+  }
+};
+
+/// APPLY-1: rotate(q / sqrt(q.q), v).
+template <class S, std::size_t L>
+struct ApplyVectorLanes : QuatLanes<S, L> {
+  S v[3][L], out[3][L];
+  void run(const S* q, const S* p) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    this->load_quats(q);
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 3; ++c) v[c][l] = p[3 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const Quat<S> a = this->quat(l);
+      const S n2 = dot(a, a);
+      const bool ordinary_q = this->ordinary(n2);
+      this->ok[l] = ordinary_q & (v[0][l] <= kMax) & (v[0][l] >= -kMax) & (v[1][l] <= kMax) & (v[1][l] >= -kMax) &
+                    (v[2][l] <= kMax) & (v[2][l] >= -kMax);
+      const Vec<S> r = rotate(a / std::sqrt(n2), Vec<S>{v[0][l], v[1][l], v[2][l]});
+      out[0][l] = r.x, out[1][l] = r.y, out[2][l] = r.z;
+    }
+  }
+};
+
 // ---- the implementation ----------------------------------------------------------------------------
 
 template <class S>
@@ -453,6 +532,33 @@ struct Dq {
     if (!valid(load(q)) || !finite(load(v))) return Status::domain_error;
     out = store(rotate(normalized(load(q)), load(v)));
     return Status::ok;
+  }
+
+  /// The batches of normalize, compose and apply_vector: SIMD lanes (QuatLanes above: the same
+  /// bits) in blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements, by
+  /// the element function.
+  ROTORCERT_TARGET_CLONES_FLAT static int normalize_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
+    using Checked = rci::detail::Elementwise<&Dq::normalize, decltype(&Dq::normalize)>;
+    const auto checked = [&](std::size_t e) { Checked::run(1, q + 4 * e, out + 4 * e, status + e); };
+    runtime::in_lanes_or_checked<NormalizeLanes>(n, q, 4, q, 0, [](auto& k, const S* a, const S* b) { k.run(a, b); },
+                                                 runtime::copy_lane_outputs<4>(out, status), checked, checked);
+    return 0;
+  }
+  ROTORCERT_TARGET_CLONES_FLAT static int compose_batch(std::size_t n, const S* a, const S* b, S* out,
+                                                       std::uint8_t* status) {
+    using Checked = rci::detail::Elementwise<&Dq::compose, decltype(&Dq::compose)>;
+    const auto checked = [&](std::size_t e) { Checked::run(1, a + 4 * e, b + 4 * e, out + 4 * e, status + e); };
+    runtime::in_lanes_or_checked<ComposeLanes>(n, a, 4, b, 4, [](auto& k, const S* x, const S* y) { k.run(x, y); },
+                                               runtime::copy_lane_outputs<4>(out, status), checked, checked);
+    return 0;
+  }
+  ROTORCERT_TARGET_CLONES_FLAT static int apply_vector_batch(std::size_t n, const S* q, const S* v, S* out,
+                                                            std::uint8_t* status) {
+    using Checked = rci::detail::Elementwise<&Dq::apply_vector, decltype(&Dq::apply_vector)>;
+    const auto checked = [&](std::size_t e) { Checked::run(1, q + 4 * e, v + 3 * e, out + 3 * e, status + e); };
+    runtime::in_lanes_or_checked<ApplyVectorLanes>(n, q, 4, v, 3, [](auto& k, const S* x, const S* y) { k.run(x, y); },
+                                                   runtime::copy_lane_outputs<3>(out, status), checked, checked);
+    return 0;
   }
 
   // -- Rigid ------------------------------------------------------------------------------------

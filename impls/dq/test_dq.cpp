@@ -18,6 +18,7 @@
 #include <rotorcert/reference/rotation_ops.hpp>
 #include <rotorcert/testing/abi_values.hpp>
 #include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/quat_batch_laws.hpp>
 #include <rotorcert/testing/rigid_laws.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
@@ -260,6 +261,16 @@ TEST(Dq, BlendFastAndCheckedPathsAgree) {
 }
 
 // ---- smoke check against the reference -------------------------------------------------------------
+
+TEST(Dq, QuaternionBatchesGiveTheElementFunctionsBits) {
+  RC_CLAUSE("NORM-1");
+  RC_CLAUSE("COMPOSE-1");
+  RC_CLAUSE("APPLY-1");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-8");
+  rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<float>(ops<float>());
+  rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<double>(ops<double>());
+}
 
 TEST(Dq, SmokeAgainstReference) {
   RC_CLAUSE("DQ-1");

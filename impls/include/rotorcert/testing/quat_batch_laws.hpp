@@ -1,0 +1,71 @@
+// A law of the quaternion batches that run ordinary elements in SIMD lanes (rotor_m2's
+// rotor/rotor_lanes.hpp, dq's QuatLanes): the batch gives each element's bits and status as the
+// element function gives them alone. Written once for any table; the tests name the clauses.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <type_traits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <rotorcert/impl.hpp>
+
+namespace rotorcert::testing::quat_batch_laws {
+
+/// NORM-1, COMPOSE-1, APPLY-1, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
+/// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
+/// gives for each element alone (a one-element call takes the element function). 61
+/// elements: 3 blocks of 16, 3 of 4 and one alone; among ordinary quaternions of sizes 1/4 .. 4
+/// (EDGE-5) sit ones scaled by 2^+-E beyond the ordinary range, zeros, subnormals, NaN and
+/// infinities (EDGE-6..8), so lanes of one block take different paths. Any difference between
+/// the lanes' arithmetic and the element function's shows as a bit.
+template <class S>
+void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
+  constexpr int E = std::is_same_v<S, float> ? 40 : 300;
+  constexpr std::size_t kCases = 61;
+  std::mt19937_64 gen(61);
+  std::uniform_real_distribution<double> unit(-1, 1), size(0.25, 4);
+  std::vector<S> a(4 * kCases), b(4 * kCases), v(3 * kCases);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    for (std::size_t c = 0; c < 4; ++c) a[4 * i + c] = S(unit(gen) * size(gen)), b[4 * i + c] = S(unit(gen) * size(gen));
+    for (std::size_t c = 0; c < 3; ++c) v[3 * i + c] = S(unit(gen) * 10);
+    switch (i % 11) {  // the specials, spread over blocks and lanes
+      case 2: for (std::size_t c = 0; c < 4; ++c) a[4 * i + c] = std::ldexp(a[4 * i + c], E); break;
+      case 5: for (std::size_t c = 0; c < 4; ++c) b[4 * i + c] = std::ldexp(b[4 * i + c], -E); break;
+      case 7: a[4 * i] = a[4 * i + 1] = a[4 * i + 2] = a[4 * i + 3] = S(i % 2 ? -0.0 : 0.0); break;
+      case 8: a[4 * i + 1] = std::numeric_limits<S>::denorm_min(), a[4 * i] = a[4 * i + 2] = a[4 * i + 3] = 0; break;
+      case 9: v[3 * i + 2] = std::numeric_limits<S>::infinity(); b[4 * i + 3] = std::numeric_limits<S>::quiet_NaN(); break;
+      default: break;
+    }
+  }
+  const auto same = [](const S* x, const S* y, std::size_t count) { return std::memcmp(x, y, count * sizeof(S)) == 0; };
+  std::vector<S> batch(4 * kCases), one(4);
+  std::vector<std::uint8_t> st(kCases);
+  std::uint8_t st1;
+  ASSERT_EQ(ops.normalize(kCases, a.data(), batch.data(), st.data()), 0);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    ops.normalize(1, &a[4 * i], one.data(), &st1);
+    EXPECT_EQ(st[i], st1) << "normalize " << i;
+    EXPECT_TRUE(same(&batch[4 * i], one.data(), 4)) << "normalize element " << i;
+  }
+  ASSERT_EQ(ops.compose(kCases, a.data(), b.data(), batch.data(), st.data()), 0);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    ops.compose(1, &a[4 * i], &b[4 * i], one.data(), &st1);
+    EXPECT_EQ(st[i], st1) << "compose " << i;
+    EXPECT_TRUE(same(&batch[4 * i], one.data(), 4)) << "compose element " << i;
+  }
+  ASSERT_EQ(ops.apply_vector(kCases, a.data(), v.data(), batch.data(), st.data()), 0);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    ops.apply_vector(1, &a[4 * i], &v[3 * i], one.data(), &st1);
+    EXPECT_EQ(st[i], st1) << "apply_vector " << i;
+    EXPECT_TRUE(same(&batch[3 * i], one.data(), 3)) << "apply_vector element " << i;
+  }
+}
+
+}  // namespace rotorcert::testing::quat_batch_laws
