@@ -129,7 +129,6 @@ struct ApplyPointLanes {
   Flag ok[L];
 
   void run(const S* d, const S* p) {
-    constexpr S kMax = std::numeric_limits<S>::max();
     constexpr S kLo = runtime::OrdinaryRange<S>::kLo, kHi = runtime::OrdinaryRange<S>::kHi;
     S x[8][L], v[3][L];
     for (std::size_t l = 0; l < L; ++l) {
@@ -139,8 +138,7 @@ struct ApplyPointLanes {
     for (std::size_t l = 0; l < L; ++l) {
       const S r2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
       const S d2 = x[4][l] * x[4][l] + x[5][l] * x[5][l] + x[6][l] * x[6][l] + x[7][l] * x[7][l];
-      const bool finite_point = (v[0][l] <= kMax) & (v[0][l] >= -kMax) & (v[1][l] <= kMax) & (v[1][l] >= -kMax) &
-                                (v[2][l] <= kMax) & (v[2][l] >= -kMax);
+      const bool finite_point = runtime::finite3_lane(v[0][l], v[1][l], v[2][l]);
       ok[l] = Flag((r2 >= kLo) & (r2 <= kHi) & ((d2 == 0) | ((d2 >= kLo) & (d2 <= kHi))) & finite_point);
       const S n = std::sqrt(r2);
       const S ux = x[0][l] / n, uy = x[1][l] / n, uz = x[2][l] / n, uw = x[3][l] / n;

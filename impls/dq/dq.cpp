@@ -21,6 +21,7 @@
 #include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_batch.hpp>
 #include <rotorcert/runtime/lane_blocks.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 #include <rotorcert/runtime/perpendicular_part.hpp>
@@ -461,7 +462,6 @@ template <class S, std::size_t L>
 struct ApplyVectorLanes : QuatLanes<S, L> {
   S v[3][L], out[3][L];
   void run(const S* q, const S* p) {
-    constexpr S kMax = std::numeric_limits<S>::max();
     this->load_quats(q);
     for (std::size_t l = 0; l < L; ++l)
       for (std::size_t c = 0; c < 3; ++c) v[c][l] = p[3 * l + c];
@@ -469,8 +469,8 @@ struct ApplyVectorLanes : QuatLanes<S, L> {
       const Quat<S> a = this->quat(l);
       const S n2 = dot(a, a);
       const bool ordinary_q = this->ordinary(n2);
-      this->ok[l] = ordinary_q & (v[0][l] <= kMax) & (v[0][l] >= -kMax) & (v[1][l] <= kMax) & (v[1][l] >= -kMax) &
-                    (v[2][l] <= kMax) & (v[2][l] >= -kMax);
+      const bool finite_v = runtime::finite3_lane(v[0][l], v[1][l], v[2][l]);
+      this->ok[l] = ordinary_q & finite_v;
       const Vec<S> r = rotate(a / std::sqrt(n2), Vec<S>{v[0][l], v[1][l], v[2][l]});
       out[0][l] = r.x, out[1][l] = r.y, out[2][l] = r.z;
     }
@@ -538,27 +538,15 @@ struct Dq {
   /// bits) in blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements, by
   /// the element function.
   ROTORCERT_TARGET_CLONES_FLAT static int normalize_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Dq::normalize, decltype(&Dq::normalize)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, q + 4 * e, out + 4 * e, status + e); };
-    runtime::in_lanes_or_checked<NormalizeLanes>(n, q, 4, q, 0, [](auto& k, const S* a, const S* b) { k.run(a, b); },
-                                                 runtime::copy_lane_outputs<4>(out, status), checked, checked);
-    return 0;
+    return runtime::lanes_or_element<NormalizeLanes, &Dq::normalize, 4, 4>(n, q, out, status);
   }
   ROTORCERT_TARGET_CLONES_FLAT static int compose_batch(std::size_t n, const S* a, const S* b, S* out,
                                                        std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Dq::compose, decltype(&Dq::compose)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, a + 4 * e, b + 4 * e, out + 4 * e, status + e); };
-    runtime::in_lanes_or_checked<ComposeLanes>(n, a, 4, b, 4, [](auto& k, const S* x, const S* y) { k.run(x, y); },
-                                               runtime::copy_lane_outputs<4>(out, status), checked, checked);
-    return 0;
+    return runtime::lanes_or_element<ComposeLanes, &Dq::compose, 4, 4, 4>(n, a, b, out, status);
   }
   ROTORCERT_TARGET_CLONES_FLAT static int apply_vector_batch(std::size_t n, const S* q, const S* v, S* out,
                                                             std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Dq::apply_vector, decltype(&Dq::apply_vector)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, q + 4 * e, v + 3 * e, out + 3 * e, status + e); };
-    runtime::in_lanes_or_checked<ApplyVectorLanes>(n, q, 4, v, 3, [](auto& k, const S* x, const S* y) { k.run(x, y); },
-                                                   runtime::copy_lane_outputs<3>(out, status), checked, checked);
-    return 0;
+    return runtime::lanes_or_element<ApplyVectorLanes, &Dq::apply_vector, 4, 3, 3>(n, q, v, out, status);
   }
 
   // -- Rigid ------------------------------------------------------------------------------------
@@ -591,12 +579,8 @@ struct Dq {
   /// 12: no vector type for its mix of int and double) and runs its lanes at scalar speed.
   ROTORCERT_TARGET_CLONES_FLAT static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out,
                                                               std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Dq::dq_apply_point, decltype(&Dq::dq_apply_point)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); };
-    runtime::in_lanes_or_checked<rotorcert::dq_lanes::ApplyPointLanes>(
-        n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-        runtime::copy_lane_outputs<3>(out, status), checked, checked);
-    return 0;
+    return runtime::lanes_or_element<rotorcert::dq_lanes::ApplyPointLanes, &Dq::dq_apply_point, 8, 3, 3>(n, d, p, out,
+                                                                                                     status);
   }
 
   /// DQ-7 (ABI version 3): DQ-4, then q = r' and t = 2 vec(d' r'*) (DQ-1 read backwards).

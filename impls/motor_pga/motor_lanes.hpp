@@ -140,7 +140,6 @@ struct ApplyPointLanes {
 
   /// The L elements starting at d (dual quaternions) and p (points).
   void run(const S* d, const S* p) {
-    constexpr S kMax = std::numeric_limits<S>::max();
     S m[8][L], v[3][L];
     for (std::size_t l = 0; l < L; ++l) {
       load_motor(d + 8 * l, l, m);
@@ -148,8 +147,7 @@ struct ApplyPointLanes {
     }
     for (std::size_t l = 0; l < L; ++l) {
       S u[8];
-      const bool finite_point = (v[0][l] <= kMax) & (v[0][l] >= -kMax) & (v[1][l] <= kMax) & (v[1][l] >= -kMax) &
-                                (v[2][l] <= kMax) & (v[2][l] >= -kMax);
+      const bool finite_point = runtime::finite3_lane(v[0][l], v[1][l], v[2][l]);
       ok[l] = Flag(normalized_lane(m, l, u)) & Flag(finite_point);
       // pga::sandwich() of the point (x, y, z, 1).
       const S s = u[0], b0 = u[1], b1 = u[2], b2 = u[3], c0 = u[4], c1 = u[5], c2 = u[6], e0123 = u[7];

@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_batch.hpp>
 #include <rotorcert/runtime/lane_blocks.hpp>
 #include <rotorcert/runtime/scalar_real_part_log.hpp>
 #include <rotorcert/runtime/target_clones.hpp>
@@ -258,12 +259,8 @@ struct MotorPga {
   /// function above.
   ROTORCERT_TARGET_CLONES_FLAT static int dq_apply_point_batch(std::size_t n, const S* d, const S* p, S* out,
                                                               std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&MotorPga::dq_apply_point, decltype(&MotorPga::dq_apply_point)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, d + 8 * e, p + 3 * e, out + 3 * e, status + e); };
-    runtime::in_lanes_or_checked<rotorcert::motor_lanes::ApplyPointLanes>(
-        n, d, 8, p, 3, [](auto& lanes, const S* dd, const S* pp) { lanes.run(dd, pp); },
-        runtime::copy_lane_outputs<3>(out, status), checked, checked);
-    return 0;
+    return runtime::lanes_or_element<rotorcert::motor_lanes::ApplyPointLanes, &MotorPga::dq_apply_point, 8, 3, 3>(
+        n, d, p, out, status);
   }
 
   static Status dq_normalize(const rci::DualQuat<S>& d, rci::DualQuat<S>& out) {

@@ -88,7 +88,6 @@ struct ApplyVectorLanes {
   Flag ok[L];
 
   void run(const S* q, const S* v) {
-    constexpr S kMax = std::numeric_limits<S>::max();
     S x[4][L], p[3][L];
     for (std::size_t l = 0; l < L; ++l) {
       for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
@@ -96,8 +95,7 @@ struct ApplyVectorLanes {
     }
     for (std::size_t l = 0; l < L; ++l) {
       const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
-      const bool finite_v = (p[0][l] <= kMax) & (p[0][l] >= -kMax) & (p[1][l] <= kMax) & (p[1][l] >= -kMax) &
-                            (p[2][l] <= kMax) & (p[2][l] >= -kMax);
+      const bool finite_v = runtime::finite3_lane(p[0][l], p[1][l], p[2][l]);
       const bool ordinary_q = ordinary(n2);
       ok[l] = Flag(ordinary_q & finite_v);
       const S n = std::sqrt(n2);

@@ -10,7 +10,7 @@
 #include <cstdint>
 
 #include <rotorcert/impl_table.hpp>
-#include <rotorcert/runtime/lane_blocks.hpp>
+#include <rotorcert/runtime/lane_batch.hpp>
 #include <rotorcert/runtime/target_clones.hpp>
 
 #include "../rotor/rotor3.hpp"
@@ -18,7 +18,6 @@
 
 namespace {
 
-namespace rci = rotorcert::impl;
 namespace runtime = rotorcert::runtime;
 namespace lanes = rotorcert::rotor::lanes;
 
@@ -32,36 +31,18 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   static constexpr std::uint32_t levels = rotorcert::rotor::kRotorLevels;
   static constexpr const char* const* clauses = rotorcert::rotor::kRotorClauses;
 
-  /// NORM-1 batch: lanes for ordinary |q|^2, RotorOps::normalize otherwise.
+  /// NORM-1, COMPOSE-1, APPLY-1 batches: lanes for ordinary |q|^2 (and finite v), RotorOps
+  /// otherwise (runtime/lane_batch.hpp).
   ROTORCERT_TARGET_CLONES_FLAT static int normalize_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Base::normalize, decltype(&Base::normalize)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, q + 4 * e, out + 4 * e, status + e); };
-    runtime::in_lanes_or_checked<lanes::NormalizeLanes>(
-        n, q, 4, q, 0, [](auto& k, const S* a, const S* b) { k.run(a, b); }, runtime::copy_lane_outputs<4>(out, status),
-        checked, checked);
-    return 0;
+    return runtime::lanes_or_element<lanes::NormalizeLanes, &Base::normalize, 4, 4>(n, q, out, status);
   }
-
-  /// COMPOSE-1 batch: lanes for ordinary |a|^2 and |b|^2, RotorOps::compose otherwise.
   ROTORCERT_TARGET_CLONES_FLAT static int compose_batch(std::size_t n, const S* a, const S* b, S* out,
                                                        std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Base::compose, decltype(&Base::compose)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, a + 4 * e, b + 4 * e, out + 4 * e, status + e); };
-    runtime::in_lanes_or_checked<lanes::ComposeLanes>(
-        n, a, 4, b, 4, [](auto& k, const S* x, const S* y) { k.run(x, y); }, runtime::copy_lane_outputs<4>(out, status),
-        checked, checked);
-    return 0;
+    return runtime::lanes_or_element<lanes::ComposeLanes, &Base::compose, 4, 4, 4>(n, a, b, out, status);
   }
-
-  /// APPLY-1 batch: lanes for ordinary |q|^2 and finite v, RotorOps::apply_vector otherwise.
   ROTORCERT_TARGET_CLONES_FLAT static int apply_vector_batch(std::size_t n, const S* q, const S* v, S* out,
                                                             std::uint8_t* status) {
-    using Checked = rci::detail::Elementwise<&Base::apply_vector, decltype(&Base::apply_vector)>;
-    const auto checked = [&](std::size_t e) { Checked::run(1, q + 4 * e, v + 3 * e, out + 3 * e, status + e); };
-    runtime::in_lanes_or_checked<lanes::ApplyVectorLanes>(
-        n, q, 4, v, 3, [](auto& k, const S* x, const S* y) { k.run(x, y); }, runtime::copy_lane_outputs<3>(out, status),
-        checked, checked);
-    return 0;
+    return runtime::lanes_or_element<lanes::ApplyVectorLanes, &Base::apply_vector, 4, 3, 3>(n, q, v, out, status);
   }
 };
 

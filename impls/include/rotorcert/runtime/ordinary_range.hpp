@@ -43,4 +43,12 @@ constexpr bool is_ordinary_square(S norm2) {
   return norm2 >= OrdinaryRange<S>::kLo && norm2 <= OrdinaryRange<S>::kHi;
 }
 
+/// Whether a vector's three components are finite, written with & and comparisons (no isfinite,
+/// no branch) so that it if-converts in the SIMD lanes' loops; NaN compares false.
+template <class S>
+constexpr bool finite3_lane(S a, S b, S c) {
+  constexpr S kMax = std::numeric_limits<S>::max();
+  return (a <= kMax) & (a >= -kMax) & (b <= kMax) & (b >= -kMax) & (c <= kMax) & (c >= -kMax);
+}
+
 }  // namespace rotorcert::runtime

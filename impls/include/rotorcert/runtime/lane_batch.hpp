@@ -1,0 +1,37 @@
+// The batch function of an element op whose ordinary elements run in SIMD lanes: lane blocks by
+// runtime/lane_blocks.hpp, and every element a lane does not take (its cheap tests failed, or it
+// is one of the last n mod 4) by the element function through impl.hpp's Elementwise loop, so
+// that the batch keeps the element function's outcomes, NaN poisoning of DOMAIN_ERROR included.
+// For the ops of one or two inputs and one output array (normalize, compose, apply_vector).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <rotorcert/impl.hpp>
+#include <rotorcert/runtime/lane_blocks.hpp>
+
+namespace rotorcert::runtime {
+
+/// Two inputs of A and B scalars per element, Out output scalars; Kernel<S, L>::run(a, b).
+template <template <class, std::size_t> class Kernel, auto Element, std::size_t A, std::size_t B, std::size_t Out,
+          class S>
+int lanes_or_element(std::size_t n, const S* a, const S* b, S* out, std::uint8_t* status) {
+  using Checked = impl::detail::Elementwise<Element, decltype(Element)>;
+  const auto element = [&](std::size_t e) { Checked::run(1, a + A * e, b + B * e, out + Out * e, status + e); };
+  in_lanes_or_checked<Kernel>(n, a, A, b, B, [](auto& k, const S* x, const S* y) { k.run(x, y); },
+                              copy_lane_outputs<Out>(out, status), element, element);
+  return 0;
+}
+
+/// One input of A scalars per element, Out output scalars; Kernel<S, L>::run(a, unused).
+template <template <class, std::size_t> class Kernel, auto Element, std::size_t A, std::size_t Out, class S>
+int lanes_or_element(std::size_t n, const S* a, S* out, std::uint8_t* status) {
+  using Checked = impl::detail::Elementwise<Element, decltype(Element)>;
+  const auto element = [&](std::size_t e) { Checked::run(1, a + A * e, out + Out * e, status + e); };
+  in_lanes_or_checked<Kernel>(n, a, A, a, 0, [](auto& k, const S* x, const S* y) { k.run(x, y); },
+                              copy_lane_outputs<Out>(out, status), element, element);
+  return 0;
+}
+
+}  // namespace rotorcert::runtime
