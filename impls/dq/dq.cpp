@@ -417,10 +417,6 @@ struct QuatLanes {
       for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
   }
   Quat<S> quat(std::size_t l) const { return {x[0][l], x[1][l], x[2][l], x[3][l]}; }
-  /// runtime::is_ordinary_square, with & so that it if-converts.
-  static bool ordinary(S n2) {
-    return (n2 >= runtime::OrdinaryRange<S>::kLo) & (n2 <= runtime::OrdinaryRange<S>::kHi);
-  }
 };
 
 /// NORM-1: q / sqrt(q.q), normalized()'s ordinary case.
@@ -432,7 +428,7 @@ struct NormalizeLanes : QuatLanes<S, L> {
     for (std::size_t l = 0; l < L; ++l) {
       const Quat<S> a = this->quat(l);
       const S n2 = dot(a, a);
-      this->ok[l] = this->ordinary(n2);
+      this->ok[l] = runtime::is_ordinary_square_lane(n2);
       const Quat<S> u = a / std::sqrt(n2);
       out[0][l] = u.x, out[1][l] = u.y, out[2][l] = u.z, out[3][l] = u.w;
     }
@@ -449,7 +445,8 @@ struct ComposeLanes : QuatLanes<S, L> {
       for (std::size_t c = 0; c < 4; ++c) y[c][l] = b[4 * l + c];
     for (std::size_t l = 0; l < L; ++l) {
       const Quat<S> p = this->quat(l), q{y[0][l], y[1][l], y[2][l], y[3][l]};
-      const bool ordinary_p = this->ordinary(dot(p, p)), ordinary_q = this->ordinary(dot(q, q));
+      const bool ordinary_p = runtime::is_ordinary_square_lane(dot(p, p));
+      const bool ordinary_q = runtime::is_ordinary_square_lane(dot(q, q));
       this->ok[l] = ordinary_p & ordinary_q;
       const Quat<S> r = p * q;
       out[0][l] = r.x, out[1][l] = r.y, out[2][l] = r.z, out[3][l] = r.w;
@@ -468,7 +465,7 @@ struct ApplyVectorLanes : QuatLanes<S, L> {
     for (std::size_t l = 0; l < L; ++l) {
       const Quat<S> a = this->quat(l);
       const S n2 = dot(a, a);
-      const bool ordinary_q = this->ordinary(n2);
+      const bool ordinary_q = runtime::is_ordinary_square_lane(n2);
       const bool finite_v = runtime::finite3_lane(v[0][l], v[1][l], v[2][l]);
       this->ok[l] = ordinary_q & finite_v;
       const Vec<S> r = rotate(a / std::sqrt(n2), Vec<S>{v[0][l], v[1][l], v[2][l]});

@@ -29,11 +29,6 @@ namespace rotorcert::rotor::lanes {
 /// A lane flag, 1 or 0: bool arrays do not vectorise.
 using Flag = std::int32_t;
 
-template <class S>
-inline bool ordinary(S norm2) {
-  return (norm2 >= runtime::OrdinaryRange<S>::kLo) & (norm2 <= runtime::OrdinaryRange<S>::kHi);
-}
-
 /// NORM-1 as RotorOps::normalize with Method2 computes it: Phi^-1(Phi(q/|q|)) = normalized(q),
 /// q / sqrt(x^2 + y^2 + z^2 + w^2), four divisions.
 template <class S, std::size_t L>
@@ -47,7 +42,7 @@ struct NormalizeLanes {
       for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
     for (std::size_t l = 0; l < L; ++l) {
       const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
-      ok[l] = Flag(ordinary(n2));
+      ok[l] = Flag(runtime::is_ordinary_square_lane(n2));
       const S n = std::sqrt(n2);
       for (std::size_t c = 0; c < 4; ++c) out[c][l] = x[c][l] / n;
     }
@@ -68,7 +63,8 @@ struct ComposeLanes {
     for (std::size_t l = 0; l < L; ++l) {
       const S na = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
       const S nb = y[0][l] * y[0][l] + y[1][l] * y[1][l] + y[2][l] * y[2][l] + y[3][l] * y[3][l];
-      const bool ordinary_a = ordinary(na), ordinary_b = ordinary(nb);  // & of calls: clang warns
+      // Named before the &: clang warns on & of two calls.
+      const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
       ok[l] = Flag(ordinary_a & ordinary_b);
       const Rotor3<S> p{x[3][l], -x[0][l], -x[1][l], -x[2][l]}, q{y[3][l], -y[0][l], -y[1][l], -y[2][l]};
       const Rotor3<S> r = gp(p, q);
@@ -96,7 +92,7 @@ struct ApplyVectorLanes {
     for (std::size_t l = 0; l < L; ++l) {
       const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
       const bool finite_v = runtime::finite3_lane(p[0][l], p[1][l], p[2][l]);
-      const bool ordinary_q = ordinary(n2);
+      const bool ordinary_q = runtime::is_ordinary_square_lane(n2);
       ok[l] = Flag(ordinary_q & finite_v);
       const S n = std::sqrt(n2);
       const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};

@@ -43,6 +43,13 @@ constexpr bool is_ordinary_square(S norm2) {
   return norm2 >= OrdinaryRange<S>::kLo && norm2 <= OrdinaryRange<S>::kHi;
 }
 
+/// is_ordinary_square() written with & rather than && so that it if-converts in the SIMD lanes'
+/// loops.
+template <class S>
+constexpr bool is_ordinary_square_lane(S norm2) {
+  return (norm2 >= OrdinaryRange<S>::kLo) & (norm2 <= OrdinaryRange<S>::kHi);
+}
+
 /// Whether a vector's three components are finite, written with & and comparisons (no isfinite,
 /// no branch) so that it if-converts in the SIMD lanes' loops; NaN compares false.
 template <class S>
