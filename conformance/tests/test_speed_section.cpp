@@ -245,10 +245,12 @@ TEST(SpeedSection, OperationCountsOfTheGeneratedRotorStandBesideBothTimes) {
   EXPECT_NE(rotorcert::report::render_markdown(report).find("| compose | float | 24 mul + 18 add (42) | 28 |"), std::string::npos);
 }
 
-const json* parity_row(const json& s, const std::string& family, const std::string& impl, const std::string& what) {
+/// The row, or null (whose .at() throws, a test failure rather than a crash).
+const json& parity_row(const json& s, const std::string& family, const std::string& impl, const std::string& what) {
+  static const json none;
   for (const json& r : s.at("parity").at("rows"))
-    if (r.at("family") == family && r.at("impl") == impl && r.at("what") == what) return &r;
-  return nullptr;
+    if (r.at("family") == family && r.at("impl") == impl && r.at("what") == what) return r;
+  return none;
 }
 
 // Issue 18's bars: each implementation's time over its quaternion baseline's from the same run.
@@ -275,28 +277,27 @@ TEST(SpeedSection, ParityComparesEachImplementationWithItsQuaternionBaseline) {
   runs.push_back(op_run("rotor_simd", "float", "exp", 1, 90.0, 40.0, 28.0));      // +75 ns: missed
   const json s = speed_section(doc, {}, "bench.json");
 
-  const json* gen_compose = parity_row(s, "GEN-PARITY", "rotor_gen", "compose");
-  ASSERT_NE(gen_compose, nullptr);
-  EXPECT_DOUBLE_EQ(gen_compose->at("slowdown").get<double>(), 1.05);
-  EXPECT_TRUE(gen_compose->at("met").get<bool>());
-  EXPECT_FALSE(parity_row(s, "GEN-PARITY", "rotor_gen", "slerp")->at("met").get<bool>());
+  const json& gen_compose = parity_row(s, "GEN-PARITY", "rotor_gen", "compose");
+  EXPECT_DOUBLE_EQ(gen_compose.at("slowdown").get<double>(), 1.05);
+  EXPECT_TRUE(gen_compose.at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "GEN-PARITY", "rotor_gen", "slerp").at("met").get<bool>());
   // A rotor_gen op without a glm_quat time of the same run has no row.
-  EXPECT_EQ(parity_row(s, "GEN-PARITY", "rotor_gen", "nlerp"), nullptr);
-  EXPECT_DOUBLE_EQ(parity_row(s, "SCALAR-1.5", "dq", "compose")->at("slowdown").get<double>(), 1.6);
-  EXPECT_FALSE(parity_row(s, "SCALAR-1.5", "dq", "compose")->at("met").get<bool>());
-  EXPECT_TRUE(parity_row(s, "SCALAR-1.5", "dq", "normalize")->at("met").get<bool>());
-  EXPECT_DOUBLE_EQ(parity_row(s, "DLB-2", "dq", "dq_blend")->at("slowdown").get<double>(), 1.8);
-  EXPECT_TRUE(parity_row(s, "DLB-2", "dq", "dq_blend")->at("met").get<bool>());
-  EXPECT_FALSE(parity_row(s, "DLB-2", "motor_pga", "dq_blend")->at("met").get<bool>());
+  EXPECT_TRUE(parity_row(s, "GEN-PARITY", "rotor_gen", "nlerp").is_null());
+  EXPECT_DOUBLE_EQ(parity_row(s, "SCALAR-1.5", "dq", "compose").at("slowdown").get<double>(), 1.6);
+  EXPECT_FALSE(parity_row(s, "SCALAR-1.5", "dq", "compose").at("met").get<bool>());
+  EXPECT_TRUE(parity_row(s, "SCALAR-1.5", "dq", "normalize").at("met").get<bool>());
+  EXPECT_DOUBLE_EQ(parity_row(s, "DLB-2", "dq", "dq_blend").at("slowdown").get<double>(), 1.8);
+  EXPECT_TRUE(parity_row(s, "DLB-2", "dq", "dq_blend").at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "DLB-2", "motor_pga", "dq_blend").at("met").get<bool>());
   // Frames of bench_document(): medium DQS 400 vs LBS 300, simple 9 vs 10; rotor_simd 250 vs 300 is
   // 0.83 of the QLB frame, not the quarter that the bar asks.
-  EXPECT_DOUBLE_EQ(parity_row(s, "DQS-FRAME", "dq", "medium")->at("slowdown").get<double>(), 400.0 / 300.0);
-  EXPECT_TRUE(parity_row(s, "DQS-FRAME", "dq", "medium")->at("met").get<bool>());
-  EXPECT_TRUE(parity_row(s, "DQS-FRAME", "dq", "simple")->at("met").get<bool>());
-  EXPECT_FALSE(parity_row(s, "SIMD-FRAME", "rotor_simd", "medium")->at("met").get<bool>());
-  EXPECT_DOUBLE_EQ(parity_row(s, "SIMD-SINGLE", "rotor_simd", "compose")->at("excess_ns").get<double>(), 15.0);
-  EXPECT_TRUE(parity_row(s, "SIMD-SINGLE", "rotor_simd", "compose")->at("met").get<bool>());
-  EXPECT_FALSE(parity_row(s, "SIMD-SINGLE", "rotor_simd", "exp")->at("met").get<bool>());
+  EXPECT_DOUBLE_EQ(parity_row(s, "DQS-FRAME", "dq", "medium").at("slowdown").get<double>(), 400.0 / 300.0);
+  EXPECT_TRUE(parity_row(s, "DQS-FRAME", "dq", "medium").at("met").get<bool>());
+  EXPECT_TRUE(parity_row(s, "DQS-FRAME", "dq", "simple").at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "SIMD-FRAME", "rotor_simd", "medium").at("met").get<bool>());
+  EXPECT_DOUBLE_EQ(parity_row(s, "SIMD-SINGLE", "rotor_simd", "compose").at("excess_ns").get<double>(), 15.0);
+  EXPECT_TRUE(parity_row(s, "SIMD-SINGLE", "rotor_simd", "compose").at("met").get<bool>());
+  EXPECT_FALSE(parity_row(s, "SIMD-SINGLE", "rotor_simd", "exp").at("met").get<bool>());
 
   // Family summaries: counts and the worst row.
   std::map<std::string, json> families;

@@ -28,11 +28,16 @@ Times op_times(const json& ops) {
   return t;
 }
 
+std::string frame_key(const std::string& scene, const std::string& impl, const std::string& scalar,
+                      const std::string& technique) {
+  return scene + "/" + impl + "/" + scalar + "/" + technique;
+}
+
 Times frame_times(const json& frames) {
   Times t;
   for (const json& r : frames)
     if (r.contains("us_per_frame") && r["us_per_frame"].is_number())
-      t[r.value("scene", "") + "/" + r.value("impl", "") + "/" + r.value("scalar", "") + "/" + r.value("technique", "")] =
+      t[frame_key(r.value("scene", ""), r.value("impl", ""), r.value("scalar", ""), r.value("technique", ""))] =
           r["us_per_frame"].get<double>();
   return t;
 }
@@ -101,12 +106,11 @@ json parity_section(const json& ops, const json& frames) {
       add("DLB-2", impl, scalar, "dq_blend", op, std::string(impl) + "/" + scalar + "/dq_blend/4096",
           "glm_quat/" + scalar + "/blend_qlb/4096", 2.0, false);
   }
-  for (const auto& [key, us] : fr) {
-    // key: scene/impl/scalar/technique
-    const auto p1 = key.find('/'), p2 = key.find('/', p1 + 1), p3 = key.find('/', p2 + 1);
-    const std::string scene = key.substr(0, p1), impl = key.substr(p1 + 1, p2 - p1 - 1),
-                      scalar = key.substr(p2 + 1, p3 - p2 - 1), technique = key.substr(p3 + 1);
-    const std::string qlb = scene + "/glm_quat/" + scalar + "/LBS";
+  for (const json& f : frames) {
+    const std::string scene = f.value("scene", ""), impl = f.value("impl", ""), scalar = f.value("scalar", ""),
+                      technique = f.value("technique", "");
+    const std::string key = frame_key(scene, impl, scalar, technique);
+    const std::string qlb = frame_key(scene, "glm_quat", scalar, "LBS");
     if ((impl == "dq" || impl == "motor_pga") && technique == "DQS")
       add("DQS-FRAME", impl, scalar, scene, fr, key, qlb, 1.5, false);
     if (impl == "rotor_simd" && technique == "LBS") add("SIMD-FRAME", impl, scalar, scene, fr, key, qlb, 0.25, false);
