@@ -308,7 +308,7 @@ std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const Fas
       // [rlo, rhi] as mid +- half: the halvings are exact (long double's range is far wider than
       // the formats'), the sum and the difference round once each.
       const long double mid = rlo / 2 + rhi / 2, half = (rhi - rlo) / 2;
-      got[a].push_back(Bounded(mid, half * (1 + 2 * u) + std::fabs(mid) * 2 * u + LDBL_TRUE_MIN));
+      got[a].push_back(Bounded(mid, half * (1 + 2 * u) + std::fabs(mid) * 2 * u + Bounded::kTiny));
     }
   const ref::BoundedScope scope;
   const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
