@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
@@ -107,10 +108,57 @@ std::string raw_words(const Decoded& d, std::size_t e) {
   std::abort();
 }
 
+/// A table's results of one batch call, as the table wrote them: the judge reads them as exact
+/// values only for the elements it has to judge (TableResults::observed), and the memo keys an
+/// element's results by their bits (TableResults::key).
+struct TableResults {
+  int rc = 0;
+  std::size_t word = 4;                          // bytes per scalar: 4 (binary32) or 8 (binary64)
+  std::vector<std::vector<unsigned char>> out;   // per output array of the op: n x stride words
+  std::vector<int> stride;                       // per output array: words per element
+  std::vector<std::uint8_t> status;              // per element
+
+  Observed observed(std::size_t e) const {
+    Observed o;
+    o.call_rc = rc;
+    o.status = status[e];
+    for (std::size_t a = 0; a < out.size(); ++a) {
+      std::vector<Real> v;
+      const std::size_t s = static_cast<std::size_t>(stride[a]);
+      for (std::size_t j = 0; j < s; ++j) {
+        const unsigned char* p = out[a].data() + (e * s + j) * word;
+        if (word == 8) {
+          double x;
+          std::memcpy(&x, p, 8);
+          v.push_back(Real(x));
+        } else {
+          float x;
+          std::memcpy(&x, p, 4);
+          v.push_back(Real(x));
+        }
+      }
+      o.outputs.push_back(std::move(v));
+    }
+    return o;
+  }
+  /// Element e's results as bytes: the call's return value, the status byte and every output
+  /// word. Equal keys are equal results, so a verdict on one holds for the other.
+  std::string key(const rc_impl& t, std::size_t e) const {
+    std::string k(reinterpret_cast<const char*>(&t), sizeof(&t));  // the table's identity (built-ins live as long)
+    k.append(reinterpret_cast<const char*>(&rc), sizeof rc);
+    k.push_back(static_cast<char>(status[e]));
+    for (std::size_t a = 0; a < out.size(); ++a) {
+      const std::size_t bytes = static_cast<std::size_t>(stride[a]) * word;
+      k.append(reinterpret_cast<const char*>(out[a].data() + e * bytes), bytes);
+    }
+    return k;
+  }
+};
+
 /// Calls `op` on the batch with the decoded bits; exact-size buffers, so ASan sees any overrun.
 template <class S>
-std::vector<Observed> call_raw(const rc_impl& t, const AbiOp& op, std::size_t n, std::size_t k,
-                               const std::vector<std::vector<unsigned char>>& raw) {
+TableResults call_raw(const rc_impl& t, const AbiOp& op, std::size_t n, std::size_t k,
+                      const std::vector<std::vector<unsigned char>>& raw) {
   std::vector<std::vector<S>> in(raw.size()), out(op.outputs.size());
   std::vector<const void*> in_ptrs;
   std::vector<void*> out_ptrs;
@@ -123,24 +171,20 @@ std::vector<Observed> call_raw(const rc_impl& t, const AbiOp& op, std::size_t n,
     out[a].assign(n * static_cast<std::size_t>(op.outputs[a].stride), S(0));
     out_ptrs.push_back(out[a].data());
   }
-  std::vector<std::uint8_t> status(n, 0xEE);  // a value no implementation writes
-  const int rc = engine::call(t, op.name, n, k, in_ptrs, out_ptrs, status.data());
-  std::vector<Observed> obs(n);
-  for (std::size_t e = 0; e < n; ++e) {
-    obs[e].call_rc = rc;
-    obs[e].status = status[e];
-    for (std::size_t a = 0; a < op.outputs.size(); ++a) {
-      const std::size_t s = static_cast<std::size_t>(op.outputs[a].stride);
-      std::vector<Real> v;
-      for (std::size_t j = 0; j < s; ++j) v.push_back(Real(out[a][e * s + j]));
-      obs[e].outputs.push_back(std::move(v));
-    }
+  TableResults r;
+  r.word = sizeof(S);
+  r.status.assign(n, 0xEE);  // a value no implementation writes
+  r.rc = engine::call(t, op.name, n, k, in_ptrs, out_ptrs, r.status.data());
+  for (std::size_t a = 0; a < op.outputs.size(); ++a) {
+    const auto* p = reinterpret_cast<const unsigned char*>(out[a].data());
+    r.out.emplace_back(p, p + out[a].size() * sizeof(S));
+    r.stride.push_back(op.outputs[a].stride);
   }
-  return obs;
+  return r;
 }
 
-std::vector<Observed> call_raw(const rc_impl& t, const AbiOp& op, std::size_t n, std::size_t k,
-                               const std::vector<std::vector<unsigned char>>& raw) {
+TableResults call_raw(const rc_impl& t, const AbiOp& op, std::size_t n, std::size_t k,
+                      const std::vector<std::vector<unsigned char>>& raw) {
   return t.scalar == RC_SCALAR_FLOAT32 ? call_raw<float>(t, op, n, k, raw) : call_raw<double>(t, op, n, k, raw);
 }
 
@@ -297,15 +341,19 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
   return Judge::status_only;
 }
 
-/// The TOL-1 verdicts of a perturbed result `r` rounded to the format, over every way it may round:
-/// the candidates enumerated where there are few (each must give the verdict: the best of the
-/// bests, the worst of the worsts), else the error bounded over all of them at once. nullopt where
-/// an error is not bounded.
+/// The TOL-1 verdicts of a perturbed result `r` rounded to the format, over every way it may round.
+/// First the error bounded over all of them at once (one evaluation): where that settles the
+/// caller's question (every rounding PASSes, or none does) it is the answer, since each rounding's
+/// error lies inside that bound. Otherwise the candidates are enumerated where there are few (each
+/// must give the verdict: the best of the bests, the worst of the worsts). nullopt where an error
+/// is not bounded.
 std::optional<engine::FastVerdicts> rounded_verdicts(const AbiOp& op, const engine::FastCase& fc,
                                                      const engine::FastReference& r, ref::Format f,
                                                      const engine::FastReference& want) {
+  const auto at_once = engine::fast_verdicts_of_rounding(op, fc, r, f, want);
+  if (at_once && (at_once->worst == ref::Verdict::pass || at_once->best != ref::Verdict::pass)) return at_once;
   const auto roundings = engine::fast_roundings(r, f);
-  if (!roundings) return engine::fast_verdicts_of_rounding(op, fc, r, f, want);
+  if (!roundings) return at_once;
   engine::FastVerdicts all{ref::Verdict::fail, ref::Verdict::pass};
   for (const engine::Values& outputs : *roundings) {
     Observed o;
@@ -426,14 +474,18 @@ Stats& stats() {
 /// format, k and the element's input bits, so it is kept between executions. libFuzzer's
 /// mutations mostly change one element of a batch and leave the others' bits as they were, and
 /// the reference evaluations (fast and MPFR, of the element and of its perturbations) are nearly
-/// all of an execution's cost. The tables are still called and judged on every execution: a
-/// table's result may depend on an element's place in the batch (SIMD lanes and tails).
+/// all of an execution's cost. The tables are still called on every execution, since a table's
+/// result may depend on an element's place in the batch (SIMD lanes and tails); what a table
+/// returns is judged again only when its bits differ from results already cleared.
 struct ElementJudgement {
   Judge judge = Judge::nothing;
   ref::Status status = ref::Status::ok;
   std::optional<engine::FastReference> fast;
   std::optional<engine::FastCase> fast_case;
   std::optional<engine::ReferenceResult> exact;
+  /// Results judged not to be a finding (TableResults::key; for log's round trip, the log
+  /// results' key followed by exp's): the verdict is a function of the element and these bits.
+  std::unordered_set<std::string> cleared;
 };
 
 /// The memo, keyed by the op, format, k and the element's raw input words. Bounded: emptied
@@ -467,6 +519,10 @@ class JudgementMemo {
  private:
   std::unordered_map<std::string, ElementJudgement> map_;
 };
+
+/// At most this many cleared results per element: a table whose results vary from call to call
+/// (a bug the judge would see as well) cannot make an entry grow without bound.
+constexpr std::size_t kClearedPerElement = 64;
 
 JudgementMemo& memo() {
   static JudgementMemo m;
@@ -632,70 +688,81 @@ int check(const Decoded& d) {
       if (status[e] == ref::Status::ok && judge[e] != Judge::nothing)
         round_trip_case[e] = engine::fast_case(op, s.lookup(rt_name), d.cases[e], f);
 
+  // Per element, the results already cleared: the memo's set for a remembered element, a new one
+  // (remembered below) for the others. Nothing is put into the memo before the tables have run,
+  // so the pointers stay valid.
+  std::vector<std::unordered_set<std::string>> new_cleared(use_memo ? d.n : 0);
+  std::vector<std::unordered_set<std::string>*> cleared(d.n, nullptr);
+  if (use_memo)
+    for (std::size_t e = 0; e < d.n; ++e) {
+      ElementJudgement* m = remembered[e] ? memo().find(keys[e]) : nullptr;
+      cleared[e] = m != nullptr ? &m->cleared : &new_cleared[e];
+    }
+  auto is_cleared = [&](std::size_t e, const std::string& key) { return cleared[e] && cleared[e]->count(key) != 0; };
+  auto clear = [&](std::size_t e, std::string key) {
+    if (cleared[e] && cleared[e]->size() < kClearedPerElement) cleared[e]->insert(std::move(key));
+  };
+
   int tables = 0;
   for (const rc_impl* t : impl::builtin_tables()) {
     if ((t->scalar == RC_SCALAR_FLOAT64) != d.f64 || !eligible(*t, op.name)) continue;
     ++tables;
-    const std::vector<Observed> got = call_raw(*t, op, d.n, d.k, d.raw);
+    const TableResults got = call_raw(*t, op, d.n, d.k, d.raw);
+    std::vector<std::string> got_key(d.n);
     for (std::size_t e = 0; e < d.n; ++e) {
+      if (judge[e] == Judge::nothing) continue;
+      got_key[e] = got.key(*t, e);
+      if (is_cleared(e, got_key[e])) continue;
       if (judge[e] == Judge::everything) {
+        const Observed got_e = got.observed(e);
         // Surely within the loose bar is never a FAIL: MPFR's verdict is PASS or QUALITY_WARNING,
         // which an acceptable convention can only turn into an ACCEPTABLE PASS.
-        const auto fv = fast[e] && fast_case[e] ? engine::fast_verdicts(op, *fast_case[e], got[e], *fast[e]) : std::nullopt;
+        const auto fv = fast[e] && fast_case[e] ? engine::fast_verdicts(op, *fast_case[e], got_e, *fast[e]) : std::nullopt;
         if (fv && fv->worst != ref::Verdict::fail) {
           if (mode == OracleMode::both &&
-              engine::judge_case_against(op, tc, d.cases[e], got[e], f, mpfr_want(e), false).verdict == ref::Verdict::fail)
+              engine::judge_case_against(op, tc, d.cases[e], got_e, f, mpfr_want(e), false).verdict == ref::Verdict::fail)
             oracle_disagreement(d, e, std::string("the verdict on ") + t->name + ": fast not FAIL, MPFR FAIL");
-          continue;
+        } else {
+          const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.cases[e], got_e, f, mpfr_want(e), false);
+          if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
         }
-        const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.cases[e], got[e], f, mpfr_want(e), false);
-        if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
-      } else if (judge[e] == Judge::status_only && (got[e].call_rc != 0 || got[e].status != RC_OK)) {
+      } else if (judge[e] == Judge::status_only && (got.rc != 0 || got.status[e] != RC_OK)) {
         finding(*t, d, e, "ill-conditioned input inside the domain: status OK required", tol_name,
                 {ref::Verdict::fail, NAN,
-                 "call returned " + std::to_string(got[e].call_rc) + ", status byte " + std::to_string(got[e].status)});
+                 "call returned " + std::to_string(got.rc) + ", status byte " + std::to_string(got.status[e])});
       }
+      clear(e, got_key[e]);
     }
-    // EXP-2: exp(log q) = q through the implementation, on log's own outputs.
+    // EXP-2: exp(log q) = q through the implementation, on log's own outputs (their words as the
+    // table wrote them are exp's inputs).
     if (op.name == "log" && engine::supports(*t, "exp") && eligible(*t, "exp")) {
       const AbiOp& exp_op = *engine::find_abi_op("exp");
-      const std::size_t word = d.f64 ? 8 : 4;
-      std::vector<std::vector<unsigned char>> raw(1);
-      for (std::size_t e = 0; e < d.n; ++e)
-        for (const Real& x : got[e].outputs.at(0)) {
-          unsigned char w[8];
-          if (d.f64) {
-            const double v = x.toDouble();
-            std::memcpy(w, &v, 8);
-          } else {
-            const float v = mpfr_get_flt(x.mpfr_srcptr(), MPFR_RNDN);
-            std::memcpy(w, &v, 4);
-          }
-          raw[0].insert(raw[0].end(), w, w + word);
-        }
-      const std::vector<Observed> back = call_raw(*t, exp_op, d.n, 0, raw);
+      const TableResults back = call_raw(*t, exp_op, d.n, 0, {got.out.at(0)});
       const spec::ToleranceClass& rt_tc = s.lookup(rt_name);
       for (std::size_t e = 0; e < d.n; ++e) {
         if (status[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
+        std::string rt_key = got_key[e] + back.key(*t, e);
+        if (is_cleared(e, rt_key)) continue;
+        const Observed got_e = got.observed(e), back_e = back.observed(e);
         // Surely not a FAIL at the fast level: MPFR's distance is not needed (in "both" mode it
         // is computed as well, and a FAIL there is a disagreement).
-        if (const auto& fc = round_trip_case[e]) {
-          const auto fv = engine::fast_round_trip_verdicts(*fc, d.cases[e], got[e], back[e]);
-          if (fv && fv->worst != ref::Verdict::fail) {
-            if (mode == OracleMode::both &&
-                engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f).verdict == ref::Verdict::fail)
-              oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
-            continue;
+        const auto& fc = round_trip_case[e];
+        const auto fv = fc ? engine::fast_round_trip_verdicts(*fc, d.cases[e], got_e, back_e) : std::nullopt;
+        if (fv && fv->worst != ref::Verdict::fail) {
+          if (mode == OracleMode::both &&
+              engine::judge_round_trip(rt_tc, d.cases[e], got_e, back_e, f).verdict == ref::Verdict::fail)
+            oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
+        } else {
+          const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.cases[e], got_e, back_e, f);
+          if (v.verdict == ref::Verdict::fail) {
+            engine::CaseVerdict shown = v;
+            shown.detail += "; log q = [";
+            for (const Real& x : got_e.outputs.at(0)) shown.detail += engine::hexfloat(x, f) + " ";
+            shown.detail += "]";
+            finding(*t, d, e, "EXP-2: exp(log q) != q through the implementation", rt_name, shown);
           }
         }
-        const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.cases[e], got[e], back[e], f);
-        if (v.verdict == ref::Verdict::fail) {
-          engine::CaseVerdict shown = v;
-          shown.detail += "; log q = [";
-          for (const Real& x : got[e].outputs.at(0)) shown.detail += engine::hexfloat(x, f) + " ";
-          shown.detail += "]";
-          finding(*t, d, e, "EXP-2: exp(log q) != q through the implementation", rt_name, shown);
-        }
+        clear(e, std::move(rt_key));
       }
     }
   }
@@ -704,7 +771,7 @@ int check(const Decoded& d) {
     for (std::size_t e = 0; e < d.n; ++e) {
       if (!remembered[e])
         memo().put(std::move(keys[e]), ElementJudgement{judge[e], status[e], std::move(fast[e]), std::move(fast_case[e]),
-                                                        std::move(exact[e])});
+                                                        std::move(exact[e]), std::move(new_cleared[e])});
       else if (ElementJudgement* m = memo().find(keys[e]); m && exact[e] && !m->exact)
         m->exact = std::move(exact[e]);  // (an entry the loop above evicted is simply not updated)
     }
