@@ -326,14 +326,16 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
                    const engine::ReferenceResult& want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   if (op.name == "from_matrix" && engine::numerically_singular(c.inputs.at(0), f)) return Judge::nothing;
-  bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f);
+  // t beyond the strict bar settles the numbers before any perturbation is judged (the
+  // perturbations then only compare statuses).
+  bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f) &&
+                 !t_beyond_strict_bar(op, tc, c, f);
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
     const Perturbation step = mpfr_perturbation(op, tc, c, f, p, pattern, numbers, want);
     if (step == Perturbation::status_differs) return Judge::nothing;
     if (step == Perturbation::beyond_strict_bar) numbers = false;
   }
-  if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (want.status == ref::Status::domain_error || numbers) return Judge::everything;
   // MAT-3's domain is the sign of a cubic in the entries: without headroom the format cannot
   // decide it, so the status is not judged either.
@@ -385,7 +387,8 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
       for (const ref::Bounded& y : arr)
         if (std::isfinite(y.value()) && std::fabs(y.value()) + y.bound() >= edge) return std::nullopt;
   }
-  bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f);
+  // As in how_to_judge: t beyond the strict bar first, so the perturbations compare statuses only.
+  bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f) && !t_beyond_strict_bar(op, tc, c, f);
   const bool debug = fuzz_debug();
   auto to_mpfr = [&](const char* why, const Case& p, int pattern) {
     if (debug) std::fprintf(stderr, "fast oracle: %s: %s; this perturbation goes to MPFR\n", op.name.c_str(), why);
@@ -413,7 +416,6 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
     if (step == Perturbation::status_differs) return Judge::nothing;
     if (step == Perturbation::beyond_strict_bar) numbers = false;
   }
-  if (numbers && t_beyond_strict_bar(op, tc, c, f)) numbers = false;
   if (!ok || numbers) return Judge::everything;
   return Judge::status_only;
 }
