@@ -164,7 +164,10 @@ T measure(Measure m, const std::vector<T>& got, const std::vector<T>& want, cons
     case Measure::dual_parts: {
       T real(0), dual(0);
       for (int i = 0; i < 4; ++i) real = max(real, T(abs(got[i] - want[i])));
-      for (int i = 4; i < 8; ++i) dual += (got[i] - want[i]) * (got[i] - want[i]);
+      for (int i = 4; i < 8; ++i) {
+        const T d = got[i] - want[i];
+        dual += d * d;  // a square of one value: ref::Bounded then knows the sum is >= 0
+      }
       if (ref::ScalarTraits<T>::is_nan(real) || ref::ScalarTraits<T>::is_nan(dual)) return ref::ScalarTraits<T>::nan();
       return max(max(real, T(sqrt(dual) / scale)), clause::METRIC_6_norm_defect(dq(got).real));
     }

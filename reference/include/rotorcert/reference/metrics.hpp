@@ -145,7 +145,8 @@ RigidError<T> METRIC_7_rigid_error(const DualQuaternion<T>& d, const DualQuatern
   const Vec3<T> t = dual_quaternion_translation(d), tr = dual_quaternion_translation(ref);
   T diff(0), len(0);
   for (int i = 0; i < 3; ++i) {
-    diff += (t[i] - tr[i]) * (t[i] - tr[i]);
+    const T di = t[i] - tr[i];
+    diff += di * di;  // one factor twice: a square, which a bounded scalar knows to be >= 0
     len += tr[i] * tr[i];
   }
   e.translation = sqrt(diff) / max(T(1), sqrt(len));
