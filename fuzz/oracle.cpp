@@ -410,7 +410,7 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
       // make it an ACCEPTABLE PASS) surely beyond the strict bar for every one.
       const auto v = fc ? rounded_verdicts(op, *fc, *r, f, want) : std::nullopt;
       if (v && v->worst == ref::Verdict::pass) step = Perturbation::agrees;
-      else if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op)) step = Perturbation::beyond_strict_bar;
+      else if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op, c, f)) step = Perturbation::beyond_strict_bar;
       else step = to_mpfr(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded", p, pattern);
     }
     if (step == Perturbation::status_differs) return Judge::nothing;

@@ -93,7 +93,7 @@ std::map<std::string, Tally> compare(int cases_per_family, bool judge) {
             // surely not PASS where no acceptable convention applies.
             const bool wrong = (fv->worst == ref::Verdict::pass && v != ref::Verdict::pass) ||
                                (fv->worst != ref::Verdict::fail && v == ref::Verdict::fail) ||
-                               (fv->best != ref::Verdict::pass && !engine::may_be_acceptable(op) &&
+                               (fv->best != ref::Verdict::pass && !engine::may_be_acceptable(op, c, f) &&
                                 v == ref::Verdict::pass);
             t.fast_pass += fv->worst == ref::Verdict::pass ? 1 : 0;
             t.fast_not_pass += fv->best != ref::Verdict::pass ? 1 : 0;

@@ -199,7 +199,7 @@ std::vector<AcceptableConvention> build_conventions() {
 
   // MAT-2: q and -q are one rotation; the canonical sign (w > 0) is the spec's choice.
   all.push_back({"sign", "from_matrix returns -q of the canonical q (w > 0): the same rotation", false, is("from_matrix"),
-                 [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
                    return unit_rotation_error(got[0], quat(want[0]));
                  }});
@@ -239,7 +239,7 @@ std::vector<AcceptableConvention> build_conventions() {
   const auto rotation_angle = [](const Real& x) { return Real(2) * atan2(abs(sin(x / Real(2))), abs(cos(x / Real(2)))); };
   all.push_back({"angle_range", "to_angle returns the angle in another range ([0, pi], the angle about -u, or signed)",
                  false, is("to_angle"),
-                 [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [rotation_angle](const AbiOp&, const Case&, const Values& got, const Values& want,
                                   ref::Format) -> std::optional<Real> {
                    if (mpfr::isnan(got[0][0])) return got[0][0];
@@ -255,7 +255,7 @@ std::vector<AcceptableConvention> build_conventions() {
   const auto axis_defect = [](const std::vector<Real>& u) { return abs(block_norm(u, 0, 3) - Real(1)); };
   all.push_back({"identity_axis", "to_axis of the identity rotation (angle 0 or 2 pi) returns another unit axis", false,
                  is("to_axis"),
-                 [pure_real_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return pure_real_input(c); },
+                 [pure_real_input](const AbiOp&, const Case& c, ref::Format) { return pure_real_input(c); },
                  [pure_real_input, axis_defect](const AbiOp&, const Case& c, const Values& got, const Values&,
                                                 ref::Format) -> std::optional<Real> {
                    if (!pure_real_input(c)) return std::nullopt;
@@ -266,7 +266,7 @@ std::vector<AcceptableConvention> build_conventions() {
   };
   all.push_back({"angle_range", "to_axis returns -u where theta >= pi: the axis of the same rotation by 2 pi - theta in [0, pi]",
                  false, is("to_axis"),
-                 [obtuse_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return obtuse_input(c); },
+                 [obtuse_input](const AbiOp&, const Case& c, ref::Format) { return obtuse_input(c); },
                  [obtuse_input, axis_defect](const AbiOp&, const Case& c, const Values& got, const Values& want,
                                              ref::Format) -> std::optional<Real> {
                    if (!obtuse_input(c)) return std::nullopt;
@@ -278,7 +278,7 @@ std::vector<AcceptableConvention> build_conventions() {
   // SQRT-1: -s is the other square root of q^ and the same rotation (as MAT-2's -q); q^ = -1 has
   // every unit pure quaternion as a square root (+z is the spec's choice, as LOG-2's).
   all.push_back({"sign", "sqrt returns -s of the canonical s (w > 0): the other square root, the same rotation", false,
-                 is("sqrt"), [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 is("sqrt"), [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
                    return unit_rotation_error(got[0], quat(want[0]));
                  }});
@@ -287,7 +287,7 @@ std::vector<AcceptableConvention> build_conventions() {
   // scaled, a correct answer of the algebra. Measured as the rotation of s/|s| against the
   // reference (sign-free, as `sign`) and the norm relation | |s|^2 / |q| - 1 |.
   all.push_back({"algebraic_root", "sqrt of a non-unit q returns the algebra's root s (s^2 = q, |s| = sqrt|q|)", false,
-                 is("sqrt"), [](const AbiOp&, const Case&, const Values&, ref::Format) { return true; },
+                 is("sqrt"), [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [](const AbiOp&, const Case& c, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
                    const Real n = block_norm(got[0], 0, 4), nq = block_norm(c.inputs[0], 0, 4);
                    if (mpfr::isnan(n) || n == 0 || nq == 0) return std::nullopt;
@@ -300,7 +300,7 @@ std::vector<AcceptableConvention> build_conventions() {
   // root of -q^, half of its angle in [0, pi] (for -1, the identity). Measured as `sign`.
   all.push_back({"principal_root", "sqrt returns the root of -q^ where w < 0: the rotation's principal square root (half its angle in [0, pi])",
                  false, is("sqrt"),
-                 [](const AbiOp&, const Case& c, const Values&, ref::Format) { return c.inputs[0][3] < 0; },
+                 [](const AbiOp&, const Case& c, ref::Format) { return c.inputs[0][3] < 0; },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
                    if (!(c.inputs[0][3] < 0)) return std::nullopt;
                    std::vector<Real> minus = c.inputs[0];
@@ -312,7 +312,7 @@ std::vector<AcceptableConvention> build_conventions() {
   const auto minus_one_input = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
   all.push_back({"minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", false,
                  is("sqrt"),
-                 [minus_one_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return minus_one_input(c); },
+                 [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); },
                  [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values&,
                                    ref::Format) -> std::optional<Real> {
                    if (!minus_one_input(c)) return std::nullopt;
@@ -378,7 +378,7 @@ std::vector<AcceptableConvention> build_conventions() {
   };
   all.push_back({"minus_one_axis", "dq_log of a dual quaternion whose real part is a negative real returns another log of it (|xi_r| = pi)",
                  false, is("dq_log"),
-                 [minus_one_input](const AbiOp&, const Case& c, const Values&, ref::Format) { return minus_one_input(c); },
+                 [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); },
                  [minus_one_input, dq_log_error](const AbiOp&, const Case& c, const Values& got, const Values&,
                                                     ref::Format) -> std::optional<Real> {
                    if (!minus_one_input(c) || block_norm(got[0], 0, 3) < ref::ScalarTraits<Real>::pi() / Real(2))
@@ -404,7 +404,7 @@ std::vector<AcceptableConvention> build_conventions() {
                    return pairwise(op) || op.name == "dq_sclerp" || op.name == "blend_qlb" || op.name == "blend_log" ||
                           op.name == "dq_blend" || op.name == "skin_dual_quaternion";
                  },
-                 [pairwise](const AbiOp& op, const Case& c, const Values&, ref::Format f) {
+                 [pairwise](const AbiOp& op, const Case& c, ref::Format f) {
                    if (!all_finite(c)) return false;
                    if (pairwise(op) || op.name == "dq_sclerp") return near_tie(normalised_dot(c.inputs[0], 0, c.inputs[1], 0), f);
                    const std::size_t wa = input_index(op, "w");
@@ -460,7 +460,7 @@ std::vector<AcceptableConvention> build_conventions() {
   // rotation, a sign a library may choose (CQRlib's HLERP, pyquaternion), as it may inside.
   all.push_back({"endpoint_sign", "slerp returns -a at t = 0 or -b' at t = 1: the same rotation with the other sign", false,
                  is("slerp"),
-                 [](const AbiOp&, const Case& c, const Values&, ref::Format) {
+                 [](const AbiOp&, const Case& c, ref::Format) {
                    return c.inputs.size() > 2 && !c.inputs[2].empty() && (c.inputs[2][0] == 0 || c.inputs[2][0] == 1);
                  },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
@@ -472,7 +472,7 @@ std::vector<AcceptableConvention> build_conventions() {
   // Declared only: an interpolation documented as oriented (no hemisphere flip: glm::mix) goes
   // from a to b itself, the long arc where a.b < 0. Undefined at an exact antipode.
   all.push_back({"oriented", "the interpolation is oriented: from a to b itself, no hemisphere flip (declared)", true, pairwise,
-                 [](const AbiOp&, const Case& c, const Values&, ref::Format) {
+                 [](const AbiOp&, const Case& c, ref::Format) {
                    return all_finite(c) && ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
                  },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
@@ -500,7 +500,7 @@ std::vector<AcceptableConvention> build_conventions() {
                  false,
                  [](const AbiOp& op) { return has_stride(op, 4) || has_stride(op, 8) || op.name == "from_axis_angle" ||
                                               op.name == "rotate_about_axis"; },
-                 [](const AbiOp& op, const Case& c, const Values&, ref::Format f) {
+                 [](const AbiOp& op, const Case& c, ref::Format f) {
                    return robust_clause_of(op, c, f) == "EDGE-6" && identity_substituted(op, c).has_value();
                  },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
@@ -527,7 +527,7 @@ std::vector<AcceptableConvention> build_conventions() {
   all.push_back({"algebraic_product",
                  "compose with a zero factor (dual real part) returns the exact product of the algebra instead of DOMAIN_ERROR",
                  false, [](const AbiOp& op) { return op.name == "compose" || op.name == "dq_compose"; },
-                 [](const AbiOp& op, const Case& c, const Values&, ref::Format f) { return robust_clause_of(op, c, f) == "EDGE-6"; },
+                 [](const AbiOp& op, const Case& c, ref::Format f) { return robust_clause_of(op, c, f) == "EDGE-6"; },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
                    if (robust_clause_of(op, c, f) != "EDGE-6") return std::nullopt;
                    const std::vector<Real> want = algebraic_product(op, c);

@@ -331,9 +331,12 @@ std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const C
   return verdicts_of_error(fc, e);
 }
 
-bool may_be_acceptable(const AbiOp& op) {
-  for (const AcceptableConvention& a : acceptable_conventions())
-    if (!a.outside_domain && !a.declared_only && a.applies(op)) return true;
+bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f) {
+  for (const AcceptableConvention& a : acceptable_conventions()) {
+    if (a.outside_domain || a.declared_only || !a.applies(op)) continue;
+    const std::optional<bool> relevant = a.relevant.of_input(op, c, f);
+    if (!relevant || *relevant) return true;
+  }
   return false;
 }
 

@@ -18,6 +18,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <rotorcert/engine/abi_op.hpp>
@@ -57,6 +58,36 @@ const Precondition* find_precondition(const std::string& id);
 /// The first precondition declared for this op that the case violates, or nullptr.
 const Precondition* violated_precondition(const Declarations& d, const AbiOp& op, const Case& c, ref::Format f);
 
+/// Whether an acceptable convention can make a difference on a case: a predicate on the input
+/// alone, or on the input and the spec's answer `want`. Which of the two is part of the type, so
+/// a fast judge that has no exact answer yet knows when the input alone decides (of_input).
+class Relevance {
+ public:
+  using OfInput = std::function<bool(const AbiOp& op, const Case& c, ref::Format f)>;
+  using OfResult = std::function<bool(const AbiOp& op, const Case& c, const Values& want, ref::Format f)>;
+
+  Relevance() = default;
+  template <class F>
+    requires std::is_invocable_r_v<bool, F, const AbiOp&, const Case&, ref::Format>
+  Relevance(F f) : of_input_(std::move(f)) {}  // NOLINT: a lambda reads as its relevance
+  template <class F>
+    requires std::is_invocable_r_v<bool, F, const AbiOp&, const Case&, const Values&, ref::Format>
+  Relevance(F f) : of_result_(std::move(f)) {}  // NOLINT
+
+  bool operator()(const AbiOp& op, const Case& c, const Values& want, ref::Format f) const {
+    return of_input_ ? of_input_(op, c, f) : of_result_(op, c, want, f);
+  }
+  /// The answer from the input alone; nullopt where it needs the spec's answer.
+  std::optional<bool> of_input(const AbiOp& op, const Case& c, ref::Format f) const {
+    if (!of_input_) return std::nullopt;
+    return of_input_(op, c, f);
+  }
+
+ private:
+  OfInput of_input_;
+  OfResult of_result_;
+};
+
 /// ACC-1: one acceptable convention. `error` measures the implementation's output against the
 /// answer under the convention, in the unit of the op's own measure (radians, relative), or
 /// returns nullopt when the convention has nothing to say about this case.
@@ -67,8 +98,9 @@ struct AcceptableConvention {
   /// (an interpolation that takes the long arc), correct when documented.
   bool declared_only = false;
   std::function<bool(const AbiOp& op)> applies;
-  /// Whether the convention can make a difference on this input (the reference is computed).
-  std::function<bool(const AbiOp& op, const Case& c, const Values& want, ref::Format f)> relevant;
+  /// Whether the convention can make a difference on this input: the judge consults it only
+  /// where it is relevant.
+  Relevance relevant;
   std::function<std::optional<Real>(const AbiOp& op, const Case& c, const Values& got, const Values& want,
                                     ref::Format f)>
       error;

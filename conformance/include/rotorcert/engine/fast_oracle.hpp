@@ -81,10 +81,12 @@ std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const Fas
 std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const Case& c, const Observed& log_got,
                                                      const Observed& exp_got);
 
-/// Whether an acceptable convention (ACC-1) that needs no declaration applies to `op` inside its
-/// domain: judge_case_against may then turn a numeric QUALITY_WARNING or FAIL into an ACCEPTABLE
-/// PASS, which only MPFR decides.
-bool may_be_acceptable(const AbiOp& op);
+/// Whether an acceptable convention (ACC-1) that needs no declaration may be relevant to case `c`
+/// of `op` inside its domain: judge_case_against may then turn a numeric QUALITY_WARNING or FAIL
+/// into an ACCEPTABLE PASS, which only MPFR decides. A convention whose relevance the input alone
+/// settles (Relevance::of_input) counts only where it is relevant; one that reads the spec's
+/// answer counts always.
+bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f);
 
 /// For the agreement test only: a deliberately broken fast level, which the test must catch.
 enum class FastOracleMutation { none, bound_too_small, wrong_term };
