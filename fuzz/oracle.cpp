@@ -238,6 +238,16 @@ bool within_headroom(const AbiOp& op, const engine::Values& inputs, const engine
   return true;
 }
 
+/// MPFR forms the normwise step and the perturbed component at 256 bits, each rounded: a Bounded
+/// perturbation holds the exact real one, and widened by 2^-240 of the magnitudes involved it
+/// holds MPFR's too, so both levels judge the same perturbed input.
+void cover_mpfr_rounding(Real&, const Real&) {}
+void cover_mpfr_rounding(ref::Bounded& x, const ref::Bounded& step) {
+  if (!std::isfinite(x.value()) || !std::isfinite(step.value())) return;  // exact specials
+  const long double slack = std::ldexp(std::fabs(x.value()) + x.bound() + std::fabs(step.value()) + step.bound(), -240);
+  x = ref::Bounded(x.value(), x.bound() + slack + ref::Bounded::kTiny);
+}
+
 /// One perturbation of the inputs, as a backward-stable implementation in the format may
 /// perturb them. pattern < 3: componentwise, every component times 1 +- u (u the unit roundoff;
 /// all +, alternating, hashed signs). pattern >= 3: normwise, one element only (element
@@ -247,15 +257,17 @@ bool within_headroom(const AbiOp& op, const engine::Values& inputs, const engine
 /// inputs cannot cancel where the result depends on their difference (nlerp or slerp of nearby
 /// rotations far outside [0, 1]); it also decides the hemisphere rule where a normalised dot
 /// product is below u (a tie within the format). Returns false when there is no such element.
-bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case& p) {
-  p = c;
+template <class T>
+bool perturbed_values(const std::vector<std::vector<T>>& in, const AbiOp& op, int pattern, const T& u,
+                      std::vector<std::vector<T>>& out) {
+  out = in;
   const std::uint64_t bits = 0x9E3779B97F4A7C15ull;
   if (pattern < 3) {
     std::size_t j = 0;
-    for (auto& arr : p.inputs)
-      for (Real& x : arr) {
+    for (auto& arr : out)
+      for (T& x : arr) {
         const bool minus = pattern == 0 ? false : pattern == 1 ? (j % 2 == 1) : ((bits >> (j % 64)) & 1) != 0;
-        x *= minus ? Real(1) - u : Real(1) + u;
+        x *= minus ? T(1) - u : T(1) + u;
         ++j;
       }
     return true;
@@ -264,21 +276,30 @@ bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case&
   // pushes it across.
   int unit = (pattern - 3) / 2;
   const bool negate = (pattern - 3) % 2 == 1;
-  for (std::size_t a = 0; a < p.inputs.size(); ++a) {
+  for (std::size_t a = 0; a < out.size(); ++a) {
     const std::size_t stride = static_cast<std::size_t>(op.inputs[a].stride);
     if (stride == 1) continue;  // scalars: the componentwise patterns cover them
-    for (std::size_t first = 0; first + stride <= p.inputs[a].size(); first += stride) {
+    for (std::size_t first = 0; first + stride <= out[a].size(); first += stride) {
       if (unit-- > 0) continue;
-      Real norm(0);
-      for (std::size_t m = first; m < first + stride; ++m) norm += c.inputs[a][m] * c.inputs[a][m];
-      const Real step = u * sqrt(norm);
+      T norm(0);
+      for (std::size_t m = first; m < first + stride; ++m) norm += in[a][m] * in[a][m];
+      const T step = u * sqrt(norm);
       const std::uint64_t h = bits * (static_cast<std::uint64_t>((pattern - 3) / 2) * 2654435761ull + 1);
-      for (std::size_t m = first; m < first + stride; ++m)
-        p.inputs[a][m] += (((h >> ((m - first + 7 * a) % 61)) & 1) != 0) != negate ? -step : step;
+      for (std::size_t m = first; m < first + stride; ++m) {
+        out[a][m] += (((h >> ((m - first + 7 * a) % 61)) & 1) != 0) != negate ? -step : step;
+        cover_mpfr_rounding(out[a][m], step);
+      }
       return true;
     }
   }
   return false;
+}
+
+bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case& p) {
+  p.k = c.k;
+  p.label = c.label;
+  p.flags = c.flags;
+  return perturbed_values(c.inputs, op, pattern, u, p.inputs);
 }
 
 
@@ -390,16 +411,22 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
   // As in how_to_judge: t beyond the strict bar first, so the perturbations compare statuses only.
   bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f) && !t_beyond_strict_bar(op, tc, c, f);
   const bool debug = fuzz_debug();
-  auto to_mpfr = [&](const char* why, const Case& p, int pattern) {
+  auto to_mpfr = [&](const char* why, int pattern) {
     if (debug) std::fprintf(stderr, "fast oracle: %s: %s; this perturbation goes to MPFR\n", op.name.c_str(), why);
+    Case p;
+    perturbed(c, op, pattern, u, p);
     return mpfr_perturbation(op, tc, c, f, p, pattern, numbers, mpfr_want());
   };
-  Case p;
-  for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
-    const auto r = engine::fast_reference(op, p.inputs, c.k);
+  // The perturbations formed in Bounded arithmetic (perturbed_values), MPFR's only where one goes
+  // to MPFR.
+  const engine::BoundedValues in = engine::bounded_values(c.inputs);
+  const ref::Bounded bu = engine::bounded_value(u);
+  engine::BoundedValues p;
+  for (int pattern = 0; perturbed_values(in, op, pattern, bu, p); ++pattern) {
+    const auto r = engine::fast_reference(op, p, c.k);
     Perturbation step;
     if (!r) {
-      step = to_mpfr("a perturbed reference is undecided", p, pattern);
+      step = to_mpfr("a perturbed reference is undecided", pattern);
     } else if (r->status != want.status) {
       step = Perturbation::status_differs;
     } else if (!numbers) {
@@ -411,7 +438,7 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
       const auto v = fc ? rounded_verdicts(op, *fc, *r, f, want) : std::nullopt;
       if (v && v->worst == ref::Verdict::pass) step = Perturbation::agrees;
       else if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op, c, f)) step = Perturbation::beyond_strict_bar;
-      else step = to_mpfr(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded", p, pattern);
+      else step = to_mpfr(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded", pattern);
     }
     if (step == Perturbation::status_differs) return Judge::nothing;
     if (step == Perturbation::beyond_strict_bar) numbers = false;

@@ -25,6 +25,12 @@ FastOracleMutation g_mutation = FastOracleMutation::none;
 /// An input of the format, or a perturbed one (fuzz oracle): exact in long double, or the nearest
 /// long double with its rounding as the bound.
 Bounded from_real(const Real& x) {
+  // Most inputs are values of the format, which a double holds exactly: mpfr_get_d and an
+  // in-place comparison settle those without mpfr_get_ld or a temporary mpreal (most of this
+  // function's time before).
+  const double d = mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN);
+  if (std::isfinite(d) ? mpfr_cmp_d(x.mpfr_srcptr(), d) == 0 : !mpfr_number_p(x.mpfr_srcptr()))
+    return {static_cast<long double>(d), 0};  // (a NaN or an infinity is exact too)
   const long double v = x.toLDouble();
   if (!std::isfinite(v) || Real(v) == x) return {v, 0};
   return Bounded::result(v, 0, 0.5L);
@@ -179,12 +185,25 @@ void set_fast_oracle_mutation(FastOracleMutation m) { g_mutation = m; }
 
 bool has_fast_reference(const std::string& op) { return fast_ops().count(op) != 0; }
 
+Bounded bounded_value(const Real& x) { return from_real(x); }
+
+BoundedValues bounded_values(const Values& v) {
+  BoundedValues out(v.size());
+  for (std::size_t a = 0; a < v.size(); ++a) {
+    out[a].reserve(v[a].size());
+    for (const Real& x : v[a]) out[a].push_back(from_real(x));
+  }
+  return out;
+}
+
 std::optional<FastReference> fast_reference(const AbiOp& op, const Values& inputs, std::size_t k) {
+  if (!has_fast_reference(op.name)) return std::nullopt;
+  return fast_reference(op, bounded_values(inputs), k);
+}
+
+std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues& in, std::size_t k) {
   const auto it = fast_ops().find(op.name);
   if (it == fast_ops().end()) return std::nullopt;
-  BoundedValues in(inputs.size());
-  for (std::size_t a = 0; a < inputs.size(); ++a)
-    for (const Real& x : inputs[a]) in[a].push_back(from_real(x));
   const ref::BoundedScope scope;
   FastReference r = it->second(in, k);
   if (!scope.decided()) return std::nullopt;

@@ -35,6 +35,13 @@ bool has_fast_reference(const std::string& op);
 /// The reference of `op` on exact inputs in Bounded arithmetic. nullopt when op has no fast
 /// reference or the evaluation met an undecided event (BoundedScope).
 std::optional<FastReference> fast_reference(const AbiOp& op, const Values& inputs, std::size_t k);
+/// The same on inputs already in Bounded form (each exact value within its component's bound).
+std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues& inputs, std::size_t k);
+
+/// Exact values as Bounded ones: exact where long double holds them, else the nearest long
+/// double with its rounding as the bound.
+ref::Bounded bounded_value(const Real& x);
+BoundedValues bounded_values(const Values& v);
 
 /// The exact value nearest to each fast output (for the checks that read magnitudes).
 Values fast_values(const FastReference& r);
