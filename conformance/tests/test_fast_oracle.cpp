@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <rotorcert/engine/fast_oracle.hpp>
+#include <rotorcert/reference/bounded_from_matrix.hpp>
 #include <rotorcert/testing/clause.hpp>
 
 namespace {
@@ -208,6 +209,43 @@ TEST(FastOracle, AWrongRoundTripDistanceIsCaught) {
   const std::size_t wrong = round_trip_disagreements(decided, first);
   engine::set_fast_oracle_mutation(engine::FastOracleMutation::none);
   EXPECT_GT(wrong, 0u);
+}
+
+/// MAT-2's eigenvector at the fast level is proved, not trusted (reference/bounded_from_matrix.hpp):
+/// from an approximation 1e-6 off, the bounds still hold the exact eigenvector and are that wide,
+/// not wider than needed; from an eigenvector of another eigenvalue there is no proof.
+TEST(FastOracle, FromMatrixEigenvectorIsProvedFromAPoorStartAndRefusedFromAWrongOne) {
+  RC_CLAUSE("MAT-2");
+  using ref::Bounded;
+  // A rotation matrix with every entry nonzero, rounded to binary64, exact as Bounded.
+  const ref::Quaternion<Real> rotation = ref::normalized(ref::Quaternion<Real>{Real(0.8), Real(-0.3), Real(0.4), Real(0.2)});
+  const auto matrix = ref::clause::MAT_1_to_matrix(rotation).value;
+  ref::Mat3<Real> m_real;
+  ref::Mat3<Bounded> m_fast;
+  for (int i = 0; i < 9; ++i) {
+    m_real[i] = Real(matrix[i].toDouble());
+    m_fast[i] = Bounded(matrix[i].toDouble());
+  }
+  const ref::Quaternion<Real> exact = ref::clause::MAT_2_from_matrix(m_real).value;  // w > 0
+  const std::array<Real, 4> exact_k_order{exact.x, exact.y, exact.z, exact.w};
+  const auto k = ref::clause::detail::from_matrix_k(m_fast);
+  ASSERT_TRUE(k.has_value());
+
+  std::array<long double, 4> start;
+  for (int i = 0; i < 4; ++i) start[i] = exact_k_order[i].toLDouble() + (i % 2 ? 1e-6L : -1e-6L);
+  const auto proved = ref::clause::detail::verified_top_eigenvector(*k, start);
+  ASSERT_TRUE(proved.has_value()) << "a start 1e-6 off the top eigenvector must be provable";
+  for (int i = 0; i < 4; ++i) {
+    const Real off = abs(exact_k_order[i] - Real((*proved)[i].value()));
+    EXPECT_LE(off, Real((*proved)[i].bound())) << "component " << i;
+    EXPECT_GE((*proved)[i].bound(), 1e-7L) << "component " << i << ": the start's own error must be in the bound";
+    EXPECT_LE((*proved)[i].bound(), 1e-4L) << "component " << i << ": a bound too wide to judge with";
+  }
+
+  // A vector orthogonal to the top eigenvector: an eigenvector of the triple eigenvalue -1/3.
+  const std::array<long double, 4> other{exact.w.toLDouble(), -exact.z.toLDouble(), exact.y.toLDouble(),
+                                         -exact.x.toLDouble()};
+  EXPECT_FALSE(ref::clause::detail::verified_top_eigenvector(*k, other).has_value());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <span>
 
 #include <rotorcert/engine/declarations.hpp>
+#include <rotorcert/reference/bounded_from_matrix.hpp>
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
@@ -50,6 +51,11 @@ std::vector<V> many(const BoundedArray& a, std::size_t k, F unpack) {
   return r;
 }
 
+ref::Mat3<Bounded> mat3(const BoundedArray& a) {
+  ref::Mat3<Bounded> m;
+  std::copy(a.begin(), a.begin() + 9, m.begin());
+  return m;
+}
 BoundedArray flat(const BQuat& q) { return {q.x, q.y, q.z, q.w}; }
 BoundedArray flat(const BV3& v) { return {v[0], v[1], v[2]}; }
 BoundedArray flat(const BDQ& d) { return {d.real.x, d.real.y, d.real.z, d.real.w, d.dual.x, d.dual.y, d.dual.z, d.dual.w}; }
@@ -85,6 +91,7 @@ const std::map<std::string, FastFn>& fast_ops() {
       {"apply_trivector",
        [](const BoundedValues& in, std::size_t) { return one(clause::APPLY_3_apply_trivector(quat(in[0]), in[1][0])); }},
       {"to_matrix", [](const BoundedValues& in, std::size_t) { return one(clause::MAT_1_to_matrix(quat(in[0]))); }},
+      {"from_matrix", [](const BoundedValues& in, std::size_t) { return one(clause::MAT_2_from_matrix_verified(mat3(in[0]))); }},
       {"to_axis_angle",
        [](const BoundedValues& in, std::size_t) {
          const auto r = clause::AXANG_1_to_axis_angle(quat(in[0]));

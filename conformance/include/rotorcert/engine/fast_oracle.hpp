@@ -28,8 +28,8 @@ struct FastReference {
   BoundedValues outputs;
 };
 
-/// Whether `op` has a fast reference (the closed-form ops; from_matrix's iterative eigenvector
-/// and the series-based ops have none).
+/// Whether `op` has a fast reference: the closed-form ops, and from_matrix, whose iterative
+/// eigenvector is verified after the fact (reference/bounded_from_matrix.hpp).
 bool has_fast_reference(const std::string& op);
 
 /// The reference of `op` on exact inputs in Bounded arithmetic. nullopt when op has no fast

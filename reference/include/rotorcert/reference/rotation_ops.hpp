@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <cstddef>
 #include <span>
 #include <type_traits>
@@ -302,6 +303,55 @@ Result<Mat3<T>> MAT_1_to_matrix(const Quaternion<T>& q) {
   return {m, Status::ok};
 }
 
+namespace detail {
+
+/// MAT-2's symmetric 4x4 K of M (rows and columns in the order x, y, z, w; see MAT_2_from_matrix
+/// below), or nullopt where M is outside the domain: a non-finite entry, det M <= 0.
+template <class T>
+std::optional<std::array<std::array<T, 4>, 4>> from_matrix_k(const Mat3<T>& matrix) {
+  using std::abs;
+  using std::max;  // (unqualified: a bounded scalar's max needs no branch)
+  if (!finite(matrix)) return std::nullopt;
+  // A positive scale changes neither the nearest rotation nor the sign of det; dividing by
+  // the largest |entry| keeps det and K finite in double.
+  T big(0);
+  for (const T& e : matrix) big = max(big, T(abs(e)));
+  if (big == 0) return std::nullopt;
+  auto m = [&](int r, int c) { return matrix[c * 3 + r] / big; };
+  const T det = m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) -
+                m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
+                m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
+  if (!(det > 0)) return std::nullopt;
+  Mat3<T> a;  // column-major, as M
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a[c * 3 + r] = m(r, c);
+  for (int pass = 0; pass < 2; ++pass) a = lift_small_singular_values(a);
+  const auto at = [&](int r, int c) { return a[c * 3 + r]; };
+  const T third = T(1) / T(3);
+  return std::array<std::array<T, 4>, 4>{{
+      {third * (at(0, 0) - at(1, 1) - at(2, 2)), third * (at(1, 0) + at(0, 1)), third * (at(2, 0) + at(0, 2)), third * (at(2, 1) - at(1, 2))},
+      {third * (at(1, 0) + at(0, 1)), third * (at(1, 1) - at(0, 0) - at(2, 2)), third * (at(2, 1) + at(1, 2)), third * (at(0, 2) - at(2, 0))},
+      {third * (at(2, 0) + at(0, 2)), third * (at(2, 1) + at(1, 2)), third * (at(2, 2) - at(0, 0) - at(1, 1)), third * (at(1, 0) - at(0, 1))},
+      {third * (at(2, 1) - at(1, 2)), third * (at(0, 2) - at(2, 0)), third * (at(1, 0) - at(0, 1)), third * (at(0, 0) + at(1, 1) + at(2, 2))},
+  }};
+}
+
+/// MAT-2's answer from a (near-)unit eigenvector q of K's largest eigenvalue: normalised, with
+/// w > 0, or, if w == 0, the first nonzero of x, y, z positive.
+template <class T>
+Quaternion<T> from_matrix_answer(Quaternion<T> q) {
+  q = normalized(q);
+  bool negate = q.w < 0;
+  if (q.w == 0) {
+    const T first = q.x != 0 ? q.x : (q.y != 0 ? q.y : q.z);
+    negate = first < 0;
+  }
+  if (negate) q = -q;
+  return {plus_zero(q.w), plus_zero(q.x), plus_zero(q.y), plus_zero(q.z)};
+}
+
+}  // namespace detail
+
 /// MAT-2, MAT-3: the quaternion of the rotation nearest to M in the Frobenius norm
 /// (Bar-Itzhack 2000): for unit q, tr(M^T R(q)) = 3 q^T K q with the symmetric 4x4 K below,
 /// so the nearest rotation is the eigenvector of K's largest eigenvalue. For an exact rotation
@@ -317,48 +367,17 @@ Result<Mat3<T>> MAT_1_to_matrix(const Quaternion<T>& q) {
 /// non-finite entry: DOMAIN_ERROR.
 template <class T>
 Result<Quaternion<T>> MAT_2_from_matrix(const Mat3<T>& matrix) {
-  using std::abs;
-  using std::sqrt;
-  if (!finite(matrix)) return domain_error<Quaternion<T>>();
-  // A positive scale changes neither the nearest rotation nor the sign of det; dividing by
-  // the largest |entry| keeps det and K finite in double.
-  T big(0);
-  for (const T& e : matrix) big = std::max(big, T(abs(e)));
-  if (big == 0) return domain_error<Quaternion<T>>();
-  auto m = [&](int r, int c) { return matrix[c * 3 + r] / big; };
-  const T det = m(0, 0) * (m(1, 1) * m(2, 2) - m(1, 2) * m(2, 1)) -
-                m(0, 1) * (m(1, 0) * m(2, 2) - m(1, 2) * m(2, 0)) +
-                m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
-  if (!(det > 0)) return domain_error<Quaternion<T>>();
-  Mat3<T> a;  // column-major, as M
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) a[c * 3 + r] = m(r, c);
-  for (int pass = 0; pass < 2; ++pass) a = detail::lift_small_singular_values(a);
-  const auto at = [&](int r, int c) { return a[c * 3 + r]; };
-  // Rows and columns in the order x, y, z, w.
-  const T third = T(1) / T(3);
-  const std::array<std::array<T, 4>, 4> k = {{
-      {third * (at(0, 0) - at(1, 1) - at(2, 2)), third * (at(1, 0) + at(0, 1)), third * (at(2, 0) + at(0, 2)), third * (at(2, 1) - at(1, 2))},
-      {third * (at(1, 0) + at(0, 1)), third * (at(1, 1) - at(0, 0) - at(2, 2)), third * (at(2, 1) + at(1, 2)), third * (at(0, 2) - at(2, 0))},
-      {third * (at(2, 0) + at(0, 2)), third * (at(2, 1) + at(1, 2)), third * (at(2, 2) - at(0, 0) - at(1, 1)), third * (at(1, 0) - at(0, 1))},
-      {third * (at(2, 1) - at(1, 2)), third * (at(0, 2) - at(2, 0)), third * (at(1, 0) - at(0, 1)), third * (at(0, 0) + at(1, 1) + at(2, 2))},
-  }};
-  const detail::Eigen4<T> eig = detail::jacobi_eigen(k);
+  const auto k = detail::from_matrix_k(matrix);
+  if (!k) return domain_error<Quaternion<T>>();
+  const detail::Eigen4<T> eig = detail::jacobi_eigen(*k);
   int best = 0;
   for (int j = 1; j < 4; ++j)
     if (eig.values[j] > eig.values[best]) best = j;
   // Eigenvector components are in the order x, y, z, w. (Components that are exactly 0 in a
   // half turn stay exactly 0: for an exactly formed matrix their rows and columns of K are 0
   // off the diagonal, so no Jacobi rotation ever mixes them in.)
-  Quaternion<T> q{eig.vectors[3][best], eig.vectors[0][best], eig.vectors[1][best], eig.vectors[2][best]};
-  q = normalized(q);
-  bool negate = q.w < 0;
-  if (q.w == 0) {
-    const T first = q.x != 0 ? q.x : (q.y != 0 ? q.y : q.z);
-    negate = first < 0;
-  }
-  if (negate) q = -q;
-  return {{detail::plus_zero(q.w), detail::plus_zero(q.x), detail::plus_zero(q.y), detail::plus_zero(q.z)}, Status::ok};
+  const Quaternion<T> q{eig.vectors[3][best], eig.vectors[0][best], eig.vectors[1][best], eig.vectors[2][best]};
+  return {detail::from_matrix_answer(q), Status::ok};
 }
 
 // ---- angle and axis ---------------------------------------------------------------------

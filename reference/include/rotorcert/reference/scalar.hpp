@@ -40,6 +40,17 @@ template <> struct ScalarTraits<double> {
   static double epsilon() { return std::numeric_limits<double>::epsilon(); }
 };
 
+/// long double: the unverified first step of a verified computation (bounded_from_matrix.hpp).
+template <> struct ScalarTraits<long double> {
+  static long double pi() { return 3.14159265358979323846264338327950288L; }
+  static long double nan() { return std::numeric_limits<long double>::quiet_NaN(); }
+  static bool is_nan(long double x) { return std::isnan(x); }
+  static bool is_finite(long double x) { return std::isfinite(x); }
+  static long double from_double(double x) { return x; }
+  static double to_double(long double x) { return static_cast<double>(x); }
+  static long double epsilon() { return std::numeric_limits<long double>::epsilon(); }
+};
+
 template <> struct ScalarTraits<Real> {
   static Real pi() { return mpfr::const_pi(); }
   static Real nan() { Real x; mpfr_set_nan(x.mpfr_ptr()); return x; }
