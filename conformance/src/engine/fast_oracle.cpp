@@ -158,6 +158,10 @@ const std::map<std::string, FastFn>& fast_ops() {
          return one(clause::SKIN_2_dual_quaternion(std::span<const BQuat>(qs), std::span<const BV3>(ts),
                                                    std::span<const Bounded>(in[2]), vec3(in[3])));
        }},
+      {"rotate_about_axis",
+       [](const BoundedValues& in, std::size_t) {
+         return one(clause::AXIS_1_rotate_about_line(vec3(in[0]), vec3(in[1]), in[2][0], vec3(in[3])));
+       }},
       {"rigid_compose",
        [](const BoundedValues& in, std::size_t) {
          return pair(clause::RIGID_1_compose(quat(in[0]), vec3(in[1]), quat(in[2]), vec3(in[3])));

@@ -83,7 +83,11 @@ class Bounded {
   friend Bounded operator-(const Bounded& a, const Bounded& b) { return a + (-b); }
   friend Bounded operator*(const Bounded& a, const Bounded& b) {
     const F v = a.v_ * b.v_;
-    if (!std::isfinite(a.v_) || !std::isfinite(b.v_)) return {v, 0};
+    if (!std::isfinite(a.v_) || !std::isfinite(b.v_)) {
+      // An infinity times a factor that may be 0: NaN or an infinity, as the exact factor decides.
+      if (may_be_zero(a) || may_be_zero(b)) undecide();
+      return {v, 0};
+    }
     // A zero factor is exact; other products carry their rounding (fmal, which would tell an exact
     // product, is software on x86-64 and costs more than it saves).
     if ((a.exact() && a.v_ == 0) || (b.exact() && b.v_ == 0)) return {v, 0};
@@ -136,6 +140,11 @@ class Bounded {
   friend bool operator!=(const Bounded& a, const Bounded& b) { return order(a, b) != 0; }
 
  private:
+  /// Whether the exact value may be 0 without being known to be: a finite, inexact interval that
+  /// holds 0.
+  static bool may_be_zero(const Bounded& x) {
+    return std::isfinite(x.v_) && !x.exact() && std::fabs(x.v_) <= x.e_ * (1 + 4 * kU);
+  }
   /// Whether a + b == v exactly (Knuth's TwoSum error is zero; a sum never underflows inexactly).
   static bool exact_sum(F a, F b, F v) {
     if (!std::isfinite(v)) return false;
@@ -149,6 +158,11 @@ class Bounded {
 };
 
 // ---- functions found by argument-dependent lookup, as mpreal's are ----
+
+/// A coefficient is absent from a product (multivector.hpp) only when it is exactly 0. One whose
+/// interval merely holds 0 is multiplied out: with a finite partner its product's interval holds
+/// the 0 that skipping it would give, and with an infinite one operator* is undecided.
+inline bool is_absent(const Bounded& x) { return x.exact() && x.value() == 0; }
 
 inline Bounded abs(const Bounded& x) { return {std::fabs(x.value()), x.bound(), true}; }
 inline Bounded fabs(const Bounded& x) { return abs(x); }

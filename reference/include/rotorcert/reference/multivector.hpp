@@ -81,13 +81,14 @@ Multivector<A, T> operator/(const Multivector<A, T>& a, const T& s) {
 
 /// Bilinear extension of a product of basis blades. `keep(a, b)` selects which blade pairs
 /// contribute; the value of each contribution is the geometric product of the two blades.
+/// Absent blades (coefficient 0) contribute nothing, not 0 times an infinite coefficient.
 template <class A, class T, class Keep>
 Multivector<A, T> blade_product(const Multivector<A, T>& x, const Multivector<A, T>& y, Keep keep) {
   Multivector<A, T> r;
   for (Bitmap a = 0; a < Bitmap(A::size); ++a) {
-    if (x.c[a] == 0) continue;
+    if (is_absent(x.c[a])) continue;
     for (Bitmap b = 0; b < Bitmap(A::size); ++b) {
-      if (y.c[b] == 0 || !keep(a, b)) continue;
+      if (is_absent(y.c[b]) || !keep(a, b)) continue;
       const int sign = A::product_sign(a, b);
       if (sign == 0) continue;
       if (sign > 0) r.c[a ^ b] += x.c[a] * y.c[b];

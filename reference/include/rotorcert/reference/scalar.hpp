@@ -61,6 +61,11 @@ template <> struct ScalarTraits<Real> {
   static Real epsilon() { return mpfr::machine_epsilon(); }
 };
 
+/// Whether a multivector coefficient is 0, so that its blade is absent from a product
+/// (multivector.hpp). ref::Bounded has its own: an interval around 0 is not absent there.
+template <class T>
+bool is_absent(const T& x) { return x == 0; }
+
 /// The largest of |x|, |y|, ...: a scale factor of the overflow-free normalisations. Taken with
 /// max, never with comparisons: in the fuzzers' interval arithmetic (ref::Bounded) two nearly equal
 /// magnitudes leave a comparison undecided, while max is continuous and needs no branch. Any of the
