@@ -142,10 +142,10 @@ struct TableResults {
     return o;
   }
   /// Element e's results as bytes: the call's return value, the status byte and every output
-  /// word. Equal keys are equal results, so a verdict on one holds for the other.
-  std::string key(const rc_impl& t, std::size_t e) const {
-    std::string k(reinterpret_cast<const char*>(&t), sizeof(&t));  // the table's identity (built-ins live as long)
-    k.append(reinterpret_cast<const char*>(&rc), sizeof rc);
+  /// word. Equal keys are equal results, so a verdict on one holds for the other, whichever
+  /// table returned them (the judge does not ask which).
+  std::string key(std::size_t e) const {
+    std::string k(reinterpret_cast<const char*>(&rc), sizeof rc);
     k.push_back(static_cast<char>(status[e]));
     for (std::size_t a = 0; a < out.size(); ++a) {
       const std::size_t bytes = static_cast<std::size_t>(stride[a]) * word;
@@ -515,8 +515,9 @@ struct ElementJudgement {
   std::optional<engine::FastReference> fast;
   std::optional<engine::FastCase> fast_case;
   std::optional<engine::ReferenceResult> exact;
-  /// Results judged not to be a finding (TableResults::key; for log's round trip, the log
-  /// results' key followed by exp's): the verdict is a function of the element and these bits.
+  /// Results judged not to be a finding, by any table (TableResults::key; for log's round trip,
+  /// the log results' key followed by exp's): the verdict is a function of the element and these
+  /// bits alone.
   std::unordered_set<std::string> cleared;
 };
 
@@ -747,7 +748,7 @@ int check(const Decoded& d) {
     std::vector<std::string> got_key(d.n);
     for (std::size_t e = 0; e < d.n; ++e) {
       if (judge[e] == Judge::nothing) continue;
-      got_key[e] = got.key(*t, e);
+      got_key[e] = got.key(e);
       if (is_cleared(e, got_key[e])) continue;
       if (judge[e] == Judge::everything) {
         const Observed got_e = got.observed(e);
@@ -777,7 +778,7 @@ int check(const Decoded& d) {
       const spec::ToleranceClass& rt_tc = s.lookup(rt_name);
       for (std::size_t e = 0; e < d.n; ++e) {
         if (status[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
-        std::string rt_key = got_key[e] + back.key(*t, e);
+        std::string rt_key = got_key[e] + back.key(e);
         if (is_cleared(e, rt_key)) continue;
         const Observed got_e = got.observed(e), back_e = back.observed(e);
         // Surely not a FAIL at the fast level: MPFR's distance is not needed (in "both" mode it
