@@ -99,12 +99,7 @@ inline Result<Quaternion<Bounded>> MAT_2_from_matrix_verified(const Mat3<Bounded
   std::array<std::array<F, 4>, 4> mid;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) mid[i][j] = (*k)[i][j].value();
-  const detail::Eigen4<F> eig = detail::jacobi_eigen(mid);
-  int best = 0;
-  for (int j = 1; j < 4; ++j)
-    if (eig.values[j] > eig.values[best]) best = j;
-  const auto q1 = detail::verified_top_eigenvector(
-      *k, {eig.vectors[0][best], eig.vectors[1][best], eig.vectors[2][best], eig.vectors[3][best]});
+  const auto q1 = detail::verified_top_eigenvector(*k, detail::top_eigenvector(detail::jacobi_eigen(mid)));
   if (!q1) {
     Bounded::undecide();
     return domain_error<Quaternion<Bounded>>();

@@ -336,6 +336,15 @@ std::optional<std::array<std::array<T, 4>, 4>> from_matrix_k(const Mat3<T>& matr
   }};
 }
 
+/// The eigenvector of the largest eigenvalue, its components in K's order.
+template <class T>
+std::array<T, 4> top_eigenvector(const Eigen4<T>& eig) {
+  int best = 0;
+  for (int j = 1; j < 4; ++j)
+    if (eig.values[j] > eig.values[best]) best = j;
+  return {eig.vectors[0][best], eig.vectors[1][best], eig.vectors[2][best], eig.vectors[3][best]};
+}
+
 /// MAT-2's answer from a (near-)unit eigenvector q of K's largest eigenvalue: normalised, with
 /// w > 0, or, if w == 0, the first nonzero of x, y, z positive.
 template <class T>
@@ -369,15 +378,10 @@ template <class T>
 Result<Quaternion<T>> MAT_2_from_matrix(const Mat3<T>& matrix) {
   const auto k = detail::from_matrix_k(matrix);
   if (!k) return domain_error<Quaternion<T>>();
-  const detail::Eigen4<T> eig = detail::jacobi_eigen(*k);
-  int best = 0;
-  for (int j = 1; j < 4; ++j)
-    if (eig.values[j] > eig.values[best]) best = j;
-  // Eigenvector components are in the order x, y, z, w. (Components that are exactly 0 in a
-  // half turn stay exactly 0: for an exactly formed matrix their rows and columns of K are 0
-  // off the diagonal, so no Jacobi rotation ever mixes them in.)
-  const Quaternion<T> q{eig.vectors[3][best], eig.vectors[0][best], eig.vectors[1][best], eig.vectors[2][best]};
-  return {detail::from_matrix_answer(q), Status::ok};
+  // (Components that are exactly 0 in a half turn stay exactly 0: for an exactly formed matrix
+  // their rows and columns of K are 0 off the diagonal, so no Jacobi rotation ever mixes them in.)
+  const std::array<T, 4> v = detail::top_eigenvector(detail::jacobi_eigen(*k));  // x, y, z, w
+  return {detail::from_matrix_answer(Quaternion<T>{v[3], v[0], v[1], v[2]}), Status::ok};
 }
 
 // ---- angle and axis ---------------------------------------------------------------------
