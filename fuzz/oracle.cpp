@@ -347,11 +347,11 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
                    const std::function<const engine::ReferenceResult&()>& mpfr_want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   if (op.name == "from_matrix" && engine::numerically_singular(c.inputs.at(0), f)) return Judge::nothing;
-  const engine::ReferenceResult& want = mpfr_want();  // (not needed above: computed only from here)
+  const engine::ReferenceResult& want = mpfr_want();  // (a singular matrix above needs none)
+  const bool headroom = within_headroom(op, c.inputs, want.outputs, f);
   // t beyond the strict bar settles the numbers before any perturbation is judged (the
   // perturbations then only compare statuses).
-  bool numbers = want.status == ref::Status::ok && within_headroom(op, c.inputs, want.outputs, f) &&
-                 !t_beyond_strict_bar(op, tc, c, f);
+  bool numbers = want.status == ref::Status::ok && headroom && !t_beyond_strict_bar(op, tc, c, f);
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
     const Perturbation step = mpfr_perturbation(op, tc, c, f, p, pattern, numbers, want);
@@ -361,7 +361,7 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
   if (want.status == ref::Status::domain_error || numbers) return Judge::everything;
   // MAT-3's domain is the sign of a cubic in the entries: without headroom the format cannot
   // decide it, so the status is not judged either.
-  if (op.name == "from_matrix" && !within_headroom(op, c.inputs, want.outputs, f)) return Judge::nothing;
+  if (op.name == "from_matrix" && !headroom) return Judge::nothing;
   return Judge::status_only;
 }
 
@@ -397,12 +397,12 @@ std::optional<engine::FastVerdicts> rounded_verdicts(const AbiOp& op, const engi
 /// use), so the answer is how_to_judge's and the other perturbations stay cheap. nullopt (the whole
 /// element to MPFR) only where an output is too near the headroom threshold to read. A perturbed
 /// result's verdict is taken at the fast level only where every way its exact value may round to
-/// the format gives it.
+/// the format gives it. The caller has taken how_to_judge's first test (a numerically singular
+/// matrix: nothing judged), which needs no reference.
 std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
                                        const engine::FastReference& want, const std::optional<engine::FastCase>& fc,
                                        const std::function<const engine::ReferenceResult&()>& mpfr_want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
-  if (op.name == "from_matrix" && engine::numerically_singular(c.inputs.at(0), f)) return Judge::nothing;  // as how_to_judge
   const bool ok = want.status == ref::Status::ok;
   if (ok) {  // within_headroom reads the outputs' magnitudes: keep clear of its threshold
     const long double edge = std::ldexp(1.0L, headroom_exponent(f) - 1);
@@ -410,8 +410,9 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
       for (const ref::Bounded& y : arr)
         if (std::isfinite(y.value()) && std::fabs(y.value()) + y.bound() >= edge) return std::nullopt;
   }
+  const bool headroom = within_headroom(op, c.inputs, engine::fast_values(want), f);
   // As in how_to_judge: t beyond the strict bar first, so the perturbations compare statuses only.
-  bool numbers = ok && within_headroom(op, c.inputs, engine::fast_values(want), f) && !t_beyond_strict_bar(op, tc, c, f);
+  bool numbers = ok && headroom && !t_beyond_strict_bar(op, tc, c, f);
   const bool debug = fuzz_debug();
   auto to_mpfr = [&](const char* why, int pattern) {
     if (debug) std::fprintf(stderr, "fast oracle: %s: %s; this perturbation goes to MPFR\n", op.name.c_str(), why);
@@ -446,7 +447,7 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
     if (step == Perturbation::beyond_strict_bar) numbers = false;
   }
   if (!ok || numbers) return Judge::everything;
-  if (op.name == "from_matrix" && !within_headroom(op, c.inputs, engine::fast_values(want), f)) return Judge::nothing;
+  if (op.name == "from_matrix" && !headroom) return Judge::nothing;
   return Judge::status_only;
 }
 

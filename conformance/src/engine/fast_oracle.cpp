@@ -23,20 +23,6 @@ namespace clause = ref::clause;
 
 FastOracleMutation g_mutation = FastOracleMutation::none;
 
-/// An input of the format, or a perturbed one (fuzz oracle): exact in long double, or the nearest
-/// long double with its rounding as the bound.
-Bounded from_real(const Real& x) {
-  // Most inputs are values of the format, which a double holds exactly: mpfr_get_d and an
-  // in-place comparison settle those without mpfr_get_ld or a temporary mpreal (most of this
-  // function's time before).
-  const double d = mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN);
-  if (std::isfinite(d) ? mpfr_cmp_d(x.mpfr_srcptr(), d) == 0 : !mpfr_number_p(x.mpfr_srcptr()))
-    return {static_cast<long double>(d), 0};  // (a NaN or an infinity is exact too)
-  const long double v = x.toLDouble();
-  if (!std::isfinite(v) || Real(v) == x) return {v, 0};
-  return Bounded::result(v, 0, 0.5L);
-}
-
 // ---- ABI layout <-> reference types, as in abi_ops.cpp, in Bounded ----------------------------
 
 BQuat quat(const BoundedArray& a, std::size_t i = 0) { return {a[i * 4 + 3], a[i * 4], a[i * 4 + 1], a[i * 4 + 2]}; }
@@ -196,27 +182,34 @@ void set_fast_oracle_mutation(FastOracleMutation m) { g_mutation = m; }
 
 bool has_fast_reference(const std::string& op) { return fast_ops().count(op) != 0; }
 
-Bounded bounded_value(const Real& x) { return from_real(x); }
+/// An input of the format, or a perturbed one (fuzz oracle): exact in long double, or the nearest
+/// long double with its rounding as the bound.
+Bounded bounded_value(const Real& x) {
+  // Most inputs are values of the format, which a double holds exactly: mpfr_get_d and an
+  // in-place comparison settle those without mpfr_get_ld or a temporary mpreal (most of this
+  // function's time before).
+  const double d = mpfr_get_d(x.mpfr_srcptr(), MPFR_RNDN);
+  if (std::isfinite(d) ? mpfr_cmp_d(x.mpfr_srcptr(), d) == 0 : !mpfr_number_p(x.mpfr_srcptr()))
+    return {static_cast<long double>(d), 0};  // (a NaN or an infinity is exact too)
+  const long double v = x.toLDouble();
+  if (!std::isfinite(v) || Real(v) == x) return {v, 0};
+  return Bounded::result(v, 0, 0.5L);
+}
 
 BoundedValues bounded_values(const Values& v) {
   BoundedValues out(v.size());
   for (std::size_t a = 0; a < v.size(); ++a) {
     out[a].reserve(v[a].size());
-    for (const Real& x : v[a]) out[a].push_back(from_real(x));
+    for (const Real& x : v[a]) out[a].push_back(bounded_value(x));
   }
   return out;
 }
 
-std::optional<FastReference> fast_reference(const AbiOp& op, const Values& inputs, std::size_t k) {
-  if (!has_fast_reference(op.name)) return std::nullopt;
-  return fast_reference(op, bounded_values(inputs), k);
-}
+namespace {
 
-std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues& in, std::size_t k) {
-  const auto it = fast_ops().find(op.name);
-  if (it == fast_ops().end()) return std::nullopt;
+std::optional<FastReference> evaluate(const AbiOp& op, const FastFn& fn, const BoundedValues& in, std::size_t k) {
   const ref::BoundedScope scope;
-  FastReference r = it->second(in, k);
+  FastReference r = fn(in, k);
   if (!scope.decided()) return std::nullopt;
   if (r.status != ref::Status::ok) r.outputs.assign(op.outputs.size(), {});
   if (g_mutation == FastOracleMutation::bound_too_small)
@@ -227,6 +220,20 @@ std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues
     y = Bounded(y.value() + std::ldexp(std::fabs(y.value()) + 1, -50), y.bound());
   }
   return r;
+}
+
+}  // namespace
+
+std::optional<FastReference> fast_reference(const AbiOp& op, const Values& inputs, std::size_t k) {
+  const auto it = fast_ops().find(op.name);
+  if (it == fast_ops().end()) return std::nullopt;  // (before converting the inputs)
+  return evaluate(op, it->second, bounded_values(inputs), k);
+}
+
+std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues& in, std::size_t k) {
+  const auto it = fast_ops().find(op.name);
+  if (it == fast_ops().end()) return std::nullopt;
+  return evaluate(op, it->second, in, k);
 }
 
 Values fast_values(const FastReference& r) {
@@ -274,8 +281,8 @@ std::optional<std::vector<Values>> fast_roundings(const FastReference& r, ref::F
 std::optional<FastCase> fast_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
   if (tc.kind != "eps" && tc.kind != "formula") return std::nullopt;
   const Real eps = ref::format_epsilon<Real>(f);
-  return FastCase{bars_for(tc, op, c, eps), from_real(op.scale(c.inputs, c.k)),
-                  from_real(ref::format_min_normal<Real>(f)), eps.toLDouble()};
+  return FastCase{bars_for(tc, op, c, eps), bounded_value(op.scale(c.inputs, c.k)),
+                  bounded_value(ref::format_min_normal<Real>(f)), eps.toLDouble()};
 }
 
 namespace {
