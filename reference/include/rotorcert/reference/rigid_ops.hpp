@@ -55,8 +55,9 @@ bool valid_weights(std::span<const T> w, std::size_t influences) {
 /// DLB and LBS only depend on the ratios.
 template <class T>
 std::vector<T> scaled_weights(std::span<const T> w) {
+  using std::max;  // the type's own max: Bounded's needs no decision between equal weights
   T largest(0);
-  for (const T& x : w) largest = std::max(largest, x);
+  for (const T& x : w) largest = max(largest, x);
   std::vector<T> r;
   for (const T& x : w) r.push_back(x / largest);
   return r;

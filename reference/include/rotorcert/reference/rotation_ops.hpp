@@ -97,10 +97,11 @@ template <class T>
 bool valid_influences(std::span<const Quaternion<T>> q, std::span<const T> w, std::size_t& pivot,
                       std::vector<T>& scaled) {
   if (q.size() != w.size() || q.empty()) return false;
+  using std::max;  // max, not a comparison: equal weights need no decision (Bounded)
   T wmax(0);
   for (std::size_t i = 0; i < q.size(); ++i) {
     if (!is_rotation(q[i]) || !finite(w[i]) || w[i] < 0) return false;
-    if (w[i] > wmax) wmax = w[i];
+    wmax = max(wmax, w[i]);
   }
   if (!(wmax > 0)) return false;  // all weights zero: zero sum
   pivot = q.size();
