@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,17 @@ struct Decoded {
   /// Per input array of the op, n elements back to back (ABI layout), as raw words: the bits of
   /// floats (binary32, 4 bytes each) or doubles (binary64, 8 bytes each).
   std::vector<std::vector<unsigned char>> raw;
-  std::vector<engine::Case> cases;  // per element: exact input values (label "fuzz")
   ref::Format format() const { return f64 ? ref::Format::binary64 : ref::Format::binary32; }
+
+  /// Element e's inputs as exact values (label "fuzz"), made on first use: the oracle reads the
+  /// judgement of most elements from its memo and never needs their MPFR values.
+  const engine::Case& exact_case(std::size_t e) const;
+  /// Element e's input words in array a, one double per word (every float and double is one).
+  std::vector<double> words(std::size_t e, std::size_t a) const;
+
+ private:
+  friend bool decode(const std::uint8_t*, std::size_t, const std::vector<std::string>&, Decoded&);
+  mutable std::vector<std::optional<engine::Case>> cases_;
 };
 
 /// Scalars of input array a for one element (k influences for per-influence arrays).

@@ -103,7 +103,7 @@ std::string raw_words(const Decoded& d, std::size_t e) {
                "detail:         %s\n"
                "================================\n",
                t.name, scalar_of(t), d.op->name.c_str(), e, d.n, d.k, join(clauses_judging(d.op->name)).c_str(),
-               tolerance.c_str(), what.c_str(), v.error, engine::describe_inputs(*d.op, d.cases[e], d.format()).c_str(),
+               tolerance.c_str(), what.c_str(), v.error, engine::describe_inputs(*d.op, d.exact_case(e), d.format()).c_str(),
                raw_words(d, e).c_str(), v.detail.c_str());
   std::abort();
 }
@@ -394,6 +394,15 @@ std::optional<engine::FastVerdicts> rounded_verdicts(const AbiOp& op, const engi
   return all;
 }
 
+/// Element e's inputs as exact Bounded values, from its words (engine::bounded_values of its
+/// exact case, without the MPFR numbers): every float and double is a long double.
+engine::BoundedValues bounded_inputs(const Decoded& d, std::size_t e) {
+  engine::BoundedValues in(d.op->inputs.size());
+  for (std::size_t a = 0; a < in.size(); ++a)
+    for (const double x : d.words(e, a)) in[a].push_back(ref::Bounded(static_cast<long double>(x), 0));
+  return in;
+}
+
 /// how_to_judge from the fast level (engine/fast_oracle.hpp): the same decisions, each taken only
 /// where the bounds settle it. A perturbation the bounds do not settle is taken at the MPFR level
 /// alone (mpfr_perturbation against `mpfr_want()`, the element's exact reference, computed on first
@@ -403,7 +412,8 @@ std::optional<engine::FastVerdicts> rounded_verdicts(const AbiOp& op, const engi
 /// the format gives it. The caller has taken how_to_judge's first test (a numerically singular
 /// matrix: nothing judged), which needs no reference.
 std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
-                                       const engine::FastReference& want, const std::optional<engine::FastCase>& fc,
+                                       const engine::BoundedValues& in, const engine::FastReference& want,
+                                       const std::optional<engine::FastCase>& fc,
                                        const std::function<const engine::ReferenceResult&()>& mpfr_want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   const bool ok = want.status == ref::Status::ok;
@@ -423,9 +433,8 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
     perturbed(c, op, pattern, u, p);
     return mpfr_perturbation(op, tc, c, f, p, pattern, numbers, mpfr_want());
   };
-  // The perturbations formed in Bounded arithmetic (perturbed_values), MPFR's only where one goes
-  // to MPFR.
-  const engine::BoundedValues in = engine::bounded_values(c.inputs);
+  // The perturbations formed in Bounded arithmetic (perturbed_values) from `in`, c's inputs,
+  // MPFR's only where one goes to MPFR.
   const ref::Bounded bu = engine::bounded_value(u);
   engine::BoundedValues p;
   for (int pattern = 0; perturbed_values(in, op, pattern, bu, p); ++pattern) {
@@ -480,7 +489,7 @@ OracleMode oracle_mode() {
                "raw bits:       %s\n"
                "================================\n",
                d.op->name.c_str(), e, d.n, d.k, what.c_str(),
-               engine::describe_inputs(*d.op, d.cases[e], d.format()).c_str(), raw_words(d, e).c_str());
+               engine::describe_inputs(*d.op, d.exact_case(e), d.format()).c_str(), raw_words(d, e).c_str());
   std::abort();
 }
 
@@ -671,7 +680,7 @@ int check(const Decoded& d) {
   std::vector<std::optional<engine::FastCase>> fast_case(d.n);  // per element, shared by every table
   std::vector<std::optional<engine::ReferenceResult>> exact(d.n);
   auto mpfr_want = [&](std::size_t e) -> const engine::ReferenceResult& {
-    if (!exact[e]) exact[e] = op.reference(d.cases[e].inputs, d.k);
+    if (!exact[e]) exact[e] = op.reference(d.exact_case(e).inputs, d.k);
     return *exact[e];
   };
   // The memo serves the fast mode only: "mpfr" measures MPFR alone, "both" compares the levels
@@ -695,18 +704,20 @@ int check(const Decoded& d) {
       }
     }
     std::optional<Judge> j;
-    if (op.name == "from_matrix" && engine::numerically_singular(d.cases[e].inputs.at(0), f))
+    engine::BoundedValues in;
+    if (op.name == "from_matrix" && engine::numerically_singular(d.exact_case(e).inputs.at(0), f)) {
       j = Judge::nothing;  // how_to_judge's first test, on the input alone: no reference needed
-    else if (mode != OracleMode::mpfr)
-      fast[e] = engine::fast_reference(op, d.cases[e].inputs, d.k);
+    } else if (mode != OracleMode::mpfr) {
+      in = bounded_inputs(d, e);
+      fast[e] = engine::fast_reference(op, in, d.k);
+    }
     if (fast[e]) {
-      fast_case[e] = engine::fast_case(op, tc, d.cases[e], f);
-      j = how_to_judge_fast(op, tc, d.cases[e], f, *fast[e], fast_case[e], [&]() -> const engine::ReferenceResult& {
-        return mpfr_want(e);
-      });
+      fast_case[e] = engine::fast_case(op, tc, d.exact_case(e), f);
+      j = how_to_judge_fast(op, tc, d.exact_case(e), f, in, *fast[e], fast_case[e],
+                            [&]() -> const engine::ReferenceResult& { return mpfr_want(e); });
     }
     if (!j || mode == OracleMode::both) {
-      const Judge m = how_to_judge(op, tc, d.cases[e], f, [&]() -> const engine::ReferenceResult& { return mpfr_want(e); });
+      const Judge m = how_to_judge(op, tc, d.exact_case(e), f, [&]() -> const engine::ReferenceResult& { return mpfr_want(e); });
       if (j && *j != m)
         oracle_disagreement(d, e, "how much is judged: fast " + std::to_string(static_cast<int>(*j)) + ", MPFR " +
                                       std::to_string(static_cast<int>(m)));
@@ -727,7 +738,7 @@ int check(const Decoded& d) {
   if (op.name == "log" && mode != OracleMode::mpfr)
     for (std::size_t e = 0; e < d.n; ++e)
       if (status[e] == ref::Status::ok && judge[e] != Judge::nothing)
-        round_trip_case[e] = engine::fast_case(op, s.lookup(rt_name), d.cases[e], f);
+        round_trip_case[e] = engine::fast_case(op, s.lookup(rt_name), d.exact_case(e), f);
 
   // Per element, the results already cleared: the memo's set for a remembered element, a new one
   // (remembered below) for the others. Nothing is put into the memo before the tables have run,
@@ -761,10 +772,10 @@ int check(const Decoded& d) {
         const auto fv = fast[e] && fast_case[e] ? engine::fast_verdicts(op, *fast_case[e], got_e, *fast[e]) : std::nullopt;
         if (fv && fv->worst != ref::Verdict::fail) {
           if (mode == OracleMode::both &&
-              engine::judge_case_against(op, tc, d.cases[e], got_e, f, mpfr_want(e), false).verdict == ref::Verdict::fail)
+              engine::judge_case_against(op, tc, d.exact_case(e), got_e, f, mpfr_want(e), false).verdict == ref::Verdict::fail)
             oracle_disagreement(d, e, std::string("the verdict on ") + t->name + ": fast not FAIL, MPFR FAIL");
         } else {
-          const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.cases[e], got_e, f, mpfr_want(e), false);
+          const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.exact_case(e), got_e, f, mpfr_want(e), false);
           if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
         }
       } else if (judge[e] == Judge::status_only && (got.rc != 0 || got.status[e] != RC_OK)) {
@@ -788,13 +799,13 @@ int check(const Decoded& d) {
         // Surely not a FAIL at the fast level: MPFR's distance is not needed (in "both" mode it
         // is computed as well, and a FAIL there is a disagreement).
         const auto& fc = round_trip_case[e];
-        const auto fv = fc ? engine::fast_round_trip_verdicts(*fc, d.cases[e], got_e, back_e) : std::nullopt;
+        const auto fv = fc ? engine::fast_round_trip_verdicts(*fc, d.exact_case(e), got_e, back_e) : std::nullopt;
         if (fv && fv->worst != ref::Verdict::fail) {
           if (mode == OracleMode::both &&
-              engine::judge_round_trip(rt_tc, d.cases[e], got_e, back_e, f).verdict == ref::Verdict::fail)
+              engine::judge_round_trip(rt_tc, d.exact_case(e), got_e, back_e, f).verdict == ref::Verdict::fail)
             oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
         } else {
-          const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.cases[e], got_e, back_e, f);
+          const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.exact_case(e), got_e, back_e, f);
           if (v.verdict == ref::Verdict::fail) {
             engine::CaseVerdict shown = v;
             shown.detail += "; log q = [";
