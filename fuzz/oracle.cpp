@@ -89,8 +89,10 @@ std::string raw_words(const Decoded& d, std::size_t e) {
   return s;
 }
 
-[[noreturn]] void finding(const rc_impl& t, const Decoded& d, std::size_t e, const std::string& what,
-                          const std::string& tolerance, const engine::CaseVerdict& v) {
+[[noreturn]] void print_and_abort(const Decoded& d, const Finding& f) {
+  const rc_impl& t = *f.table;
+  const std::size_t e = f.element;
+  const engine::CaseVerdict& v = f.verdict;
   std::fprintf(stderr,
                "\n==== rotorcert fuzz finding ====\n"
                "implementation: %s (%s)\n"
@@ -103,7 +105,7 @@ std::string raw_words(const Decoded& d, std::size_t e) {
                "detail:         %s\n"
                "================================\n",
                t.name, scalar_of(t), d.op->name.c_str(), e, d.n, d.k, join(clauses_judging(d.op->name)).c_str(),
-               tolerance.c_str(), what.c_str(), v.error, engine::describe_inputs(*d.op, d.exact_case(e), d.format()).c_str(),
+               f.tolerance.c_str(), f.what.c_str(), v.error, engine::describe_inputs(*d.op, d.exact_case(e), d.format()).c_str(),
                raw_words(d, e).c_str(), v.detail.c_str());
   std::abort();
 }
@@ -663,7 +665,9 @@ bool eligible(const rc_impl& table, const std::string& op, std::string* why) {
   return it->second;
 }
 
-int check(const Decoded& d) {
+int check(const Decoded& d) { return check(d, impl::builtin_tables(), print_and_abort); }
+
+int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const FindingHandler& on_finding) {
   init();
   const spec::Spec& s = embedded_spec();
   const AbiOp& op = *d.op;
@@ -755,10 +759,13 @@ int check(const Decoded& d) {
     if (cleared[e] && cleared[e]->size() < kClearedPerElement) cleared[e]->insert(std::move(key));
   };
 
-  int tables = 0;
-  for (const rc_impl* t : impl::builtin_tables()) {
+  // A finding is reported and its result is not cleared (a handler that returns sees it again).
+  auto finding = [&](const rc_impl& t, std::size_t e, const std::string& what, const std::string& tolerance,
+                     const engine::CaseVerdict& v) { on_finding(d, Finding{&t, e, what, tolerance, v}); };
+  int run = 0;
+  for (const rc_impl* t : tables) {
     if ((t->scalar == RC_SCALAR_FLOAT64) != d.f64 || !eligible(*t, op.name)) continue;
-    ++tables;
+    ++run;
     const TableResults got = call_raw(*t, op, d.n, d.k, d.raw);
     std::vector<std::string> got_key(d.n);
     for (std::size_t e = 0; e < d.n; ++e) {
@@ -776,12 +783,16 @@ int check(const Decoded& d) {
             oracle_disagreement(d, e, std::string("the verdict on ") + t->name + ": fast not FAIL, MPFR FAIL");
         } else {
           const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.exact_case(e), got_e, f, mpfr_want(e), false);
-          if (v.verdict == ref::Verdict::fail) finding(*t, d, e, "FAIL against the reference", tol_name, v);
+          if (v.verdict == ref::Verdict::fail) {
+            finding(*t, e, "FAIL against the reference", tol_name, v);
+            continue;
+          }
         }
       } else if (judge[e] == Judge::status_only && (got.rc != 0 || got.status[e] != RC_OK)) {
-        finding(*t, d, e, "ill-conditioned input inside the domain: status OK required", tol_name,
+        finding(*t, e, "ill-conditioned input inside the domain: status OK required", tol_name,
                 {ref::Verdict::fail, NAN,
                  "call returned " + std::to_string(got.rc) + ", status byte " + std::to_string(got.status[e])});
+        continue;
       }
       clear(e, got_key[e]);
     }
@@ -811,7 +822,8 @@ int check(const Decoded& d) {
             shown.detail += "; log q = [";
             for (const Real& x : got_e.outputs.at(0)) shown.detail += engine::hexfloat(x, f) + " ";
             shown.detail += "]";
-            finding(*t, d, e, "EXP-2: exp(log q) != q through the implementation", rt_name, shown);
+            finding(*t, e, "EXP-2: exp(log q) != q through the implementation", rt_name, shown);
+            continue;
           }
         }
         clear(e, std::move(rt_key));
@@ -827,7 +839,7 @@ int check(const Decoded& d) {
       else if (ElementJudgement* m = memo().find(keys[e]); m && exact[e] && !m->exact)
         m->exact = std::move(exact[e]);  // (an entry the loop above evicted is simply not updated)
     }
-  return tables;
+  return run;
 }
 
 }  // namespace rotorcert::fuzz

@@ -37,6 +37,10 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+#include <string>
+#include <vector>
+
 #include <rotorcert/engine/runner.hpp>
 #include <rotorcert/impl_abi.h>
 #include <rotorcert/spec/spec.hpp>
@@ -62,9 +66,24 @@ std::string fuzz_tolerance(const std::string& op);
 /// Whether `table` is checked on `op` (see above); `why` says why not.
 bool eligible(const rc_impl& table, const std::string& op, std::string* why = nullptr);
 
+/// What a finding reports: the table, the element, what is wrong and the judge's verdict.
+struct Finding {
+  const rc_impl* table = nullptr;
+  std::size_t element = 0;
+  std::string what;
+  std::string tolerance;
+  engine::CaseVerdict verdict;
+};
+/// Called once per finding. The default (check(d)) prints the finding and aborts, which is how
+/// libFuzzer sees it; a handler that returns lets check() go on with the next result.
+using FindingHandler = std::function<void(const Decoded&, const Finding&)>;
+
 /// Runs and judges a decoded batch on every eligible table of its scalar type; aborts on a finding.
 /// Returns the number of tables run.
 int check(const Decoded& d);
+/// The same on `tables` (each run where it is eligible), each finding passed to `on_finding`.
+/// The oracle's memo is shared with check(d): a test uses this to show what the memo keeps.
+int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const FindingHandler& on_finding);
 
 /// Sets the reference precision and loads the embedded spec (idempotent; every harness calls it).
 void init();
