@@ -313,18 +313,32 @@ bool perturbed(const Case& c, const AbiOp& op, int pattern, const Real& u, Case&
 /// and judged by the same judge_case. A status that changes under perturbation: nothing is
 /// judged (the input sits on the domain boundary, e.g. det M = 0 within rounding). Outputs that
 /// move beyond the strict bar, or values without headroom: only the status.
-/// An interpolation parameter multiplies the implementation's own rounding of the angle between
-/// the endpoints, which no perturbation of the inputs shows when the angle is a multiple of
-/// pi / 2 and t an even integer (every binary64 beyond 2^54): one unit roundoff of that angle
-/// moves the result by |t| u, so beyond the strict bar only the status is judged (SLERP-4).
-bool t_beyond_strict_bar(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
+/// Inputs that multiply the implementation's own rounding of an angle, so that one unit roundoff u
+/// moves the result beyond the strict bar; then only the status is judged, decided before the
+/// perturbations (which then compare statuses only), at both levels alike:
+/// - an interpolation parameter multiplies the rounding of the angle between the endpoints, which
+///   no perturbation of the inputs shows when the angle is a multiple of pi / 2 and t an even
+///   integer (every binary64 beyond 2^54): one unit roundoff of that angle moves the result by
+///   |t| u (SLERP-4);
+/// - exp's rotation angle is 2|v| (EXP-1): the rounding of |v| turns it by 2|v| u, which is what
+///   the first perturbation (every component times 1 + u) shows too. Said first, it spares the fast
+///   level the sine of an argument whose bound spans a turn (|v| beyond 2^64), which it cannot
+///   bound and sent to MPFR.
+bool multiplied_rounding_beyond_strict_bar(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c,
+                                           ref::Format f) {
   const auto strict = tc.strict_value();
   if (tc.kind != "eps" || !strict) return false;
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
+  const Real bar = *strict * ref::format_epsilon<Real>(f);
   for (std::size_t a = 0; a < op.inputs.size(); ++a)
     if (op.inputs[a].name == "t")
       for (const Real& t : c.inputs[a])
-        if (mpfr::isfinite(t) && abs(t) * u > *strict * ref::format_epsilon<Real>(f)) return true;
+        if (mpfr::isfinite(t) && abs(t) * u > bar) return true;
+  if (op.name == "exp") {
+    Real length2(0);
+    for (const Real& x : c.inputs.at(0)) length2 += x * x;
+    if (mpfr::isfinite(length2) && Real(2) * sqrt(length2) * u > bar) return true;
+  }
   return false;
 }
 
@@ -354,9 +368,9 @@ Judge how_to_judge(const AbiOp& op, const spec::ToleranceClass& tc, const Case& 
   if (op.name == "from_matrix" && engine::numerically_singular(c.inputs.at(0), f)) return Judge::nothing;
   const engine::ReferenceResult& want = mpfr_want();  // (a singular matrix above needs none)
   const bool headroom = within_headroom(op, c.inputs, want.outputs, f);
-  // t beyond the strict bar settles the numbers before any perturbation is judged (the
-  // perturbations then only compare statuses).
-  bool numbers = want.status == ref::Status::ok && headroom && !t_beyond_strict_bar(op, tc, c, f);
+  // t or exp's angle beyond the strict bar settles the numbers before any perturbation is judged
+  // (the perturbations then only compare statuses).
+  bool numbers = want.status == ref::Status::ok && headroom && !multiplied_rounding_beyond_strict_bar(op, tc, c, f);
   Case p;
   for (int pattern = 0; perturbed(c, op, pattern, u, p); ++pattern) {
     const Perturbation step = mpfr_perturbation(op, tc, c, f, p, pattern, numbers, want);
@@ -426,8 +440,9 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
         if (std::isfinite(y.value()) && std::fabs(y.value()) + y.bound() >= edge) return std::nullopt;
   }
   const bool headroom = within_headroom(op, c.inputs, engine::fast_values(want), f);
-  // As in how_to_judge: t beyond the strict bar first, so the perturbations compare statuses only.
-  bool numbers = ok && headroom && !t_beyond_strict_bar(op, tc, c, f);
+  // As in how_to_judge: t or exp's angle beyond the strict bar first, so the perturbations
+  // compare statuses only.
+  bool numbers = ok && headroom && !multiplied_rounding_beyond_strict_bar(op, tc, c, f);
   const bool debug = fuzz_debug();
   auto to_mpfr = [&](const char* why, int pattern) {
     if (debug) std::fprintf(stderr, "fast oracle: %s: %s; this perturbation goes to MPFR\n", op.name.c_str(), why);
