@@ -450,6 +450,24 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
     perturbed(c, op, pattern, u, p);
     return mpfr_perturbation(op, tc, c, f, p, pattern, numbers, mpfr_want());
   };
+  // Where an acceptable convention is relevant, judge_case_against turns a result that fails the
+  // strict bar into an ACCEPTABLE PASS when the first convention that accepts it (in the list's
+  // order) does so with a PASS. Decided here only where the conventions have a fast form
+  // (fast_acceptable_answers, formed once per element): surely PASS against the first answer, or
+  // surely not PASS against the spec's and every other answer.
+  std::optional<std::optional<std::vector<engine::AcceptableAnswer>>> acceptable;
+  auto judged_with_conventions = [&](const engine::FastVerdicts& v, const engine::FastReference& r, int pattern) {
+    if (!acceptable) acceptable = engine::fast_acceptable_answers(op, c, in, f);
+    if (!*acceptable) return to_mpfr("an acceptable convention may be relevant and has no fast form", pattern);
+    bool surely_not_pass = v.best != ref::Verdict::pass;
+    for (std::size_t i = 0; i < (*acceptable)->size(); ++i) {
+      const auto av = rounded_verdicts(op, *fc, r, f, (**acceptable)[i].answer);
+      if (i == 0 && av && av->worst == ref::Verdict::pass) return Perturbation::agrees;
+      if (!av || av->best == ref::Verdict::pass) surely_not_pass = false;
+    }
+    return surely_not_pass ? Perturbation::beyond_strict_bar
+                           : to_mpfr("a perturbed result sits on the strict bar of the spec or a convention", pattern);
+  };
   // The perturbations formed in Bounded arithmetic (perturbed_values) from `in`, c's inputs,
   // MPFR's only where one goes to MPFR.
   const ref::Bounded bu = engine::bounded_value(u);
@@ -469,8 +487,11 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
       // make it an ACCEPTABLE PASS) surely beyond the strict bar for every one.
       const auto v = fc ? rounded_verdicts(op, *fc, *r, f, want) : std::nullopt;
       if (v && v->worst == ref::Verdict::pass) step = Perturbation::agrees;
-      else if (v && v->best != ref::Verdict::pass && !engine::may_be_acceptable(op, c, f)) step = Perturbation::beyond_strict_bar;
-      else step = to_mpfr(v ? "a perturbed result sits on the strict bar" : "a perturbed result's error is not bounded", pattern);
+      else if (!v) step = to_mpfr("a perturbed result's error is not bounded", pattern);
+      else if (!engine::may_be_acceptable(op, c, f))
+        step = v->best != ref::Verdict::pass ? Perturbation::beyond_strict_bar
+                                              : to_mpfr("a perturbed result sits on the strict bar", pattern);
+      else step = judged_with_conventions(*v, *r, pattern);
     }
     if (step == Perturbation::status_differs) return Judge::nothing;
     if (step == Perturbation::beyond_strict_bar) numbers = false;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <rotorcert/engine/declarations.hpp>
 #include <rotorcert/engine/fast_oracle.hpp>
 #include <rotorcert/reference/bounded_from_matrix.hpp>
 #include <rotorcert/testing/clause.hpp>
@@ -209,6 +210,82 @@ TEST(FastOracle, AWrongRoundTripDistanceIsCaught) {
   const std::size_t wrong = round_trip_disagreements(decided, first);
   engine::set_fast_oracle_mutation(engine::FastOracleMutation::none);
   EXPECT_GT(wrong, 0u);
+}
+
+/// ACC-1's conventions at the fast level (engine::fast_acceptable_answers): on the suite's cases
+/// where a hemisphere tie is at stake, an observation's verdicts against each fast answer are the
+/// convention's own (its MPFR error, `AcceptableConvention::error`): surely PASS where it PASSes,
+/// surely not PASS where it does not. Observations: the answer rounded, then 3, 40 and 2000 eps off.
+std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& first) {
+  std::size_t wrong = 0;
+  engine::CaseOptions options;
+  options.cases_per_family = 32;
+  for (const spec::Clause& clause : the_spec().clauses) {
+    if (clause.level == "Meta") continue;
+    for (const ref::Format f : {ref::Format::binary32, ref::Format::binary64}) {
+      for (const engine::Check& check :
+           engine::checks_for_clause(the_spec(), clause.id, f, options, [](const std::string&) { return true; })) {
+        if (check.log_exp_round_trip || !engine::has_fast_reference(check.op)) continue;
+        const engine::AbiOp& op = engine::judged_op(check.clause, check.op);
+        const spec::ToleranceClass& tc =
+            the_spec().lookup(check.tolerance.empty() ? engine::tolerance_for(the_spec(), check.clause, check.op)
+                                                      : check.tolerance);
+        const Real eps = ref::format_epsilon<Real>(f);
+        for (const engine::Case& c : check.cases) {
+          if (!engine::hemisphere_tie_at_stake(op, c, f)) continue;
+          const engine::ReferenceResult want = op.reference(c.inputs, c.k);
+          const auto fc = engine::fast_case(op, tc, c, f);
+          const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), f);
+          if (want.status != ref::Status::ok || !fc || !answers) continue;
+          for (const engine::AcceptableAnswer& a : *answers) {
+            const engine::AcceptableConvention* convention = nullptr;
+            for (const engine::AcceptableConvention& x : engine::acceptable_conventions())
+              if (x.id == a.convention && x.applies(op)) convention = &x;
+            const std::string where = clause.id + " " + check.op + " [" + c.label + "] " + engine::describe_inputs(op, c, f);
+            if (convention == nullptr) {
+              ++wrong;
+              if (first.empty()) first = "an answer of no convention " + a.convention + ": " + where;
+              continue;
+            }
+            for (const int k : {0, 3, 40, 2000}) {
+              engine::Observed o;
+              o.status = RC_OK;
+              o.outputs = engine::fast_values(a.answer);
+              for (auto& arr : o.outputs)
+                for (Real& x : arr) x = engine::round_to(f, x);
+              Real& x = o.outputs[0][0];
+              x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+              const auto fv = engine::fast_verdicts(op, *fc, o, a.answer);
+              if (!fv) continue;
+              ++decided;
+              const std::optional<Real> error = convention->error(op, c, o.outputs, want.outputs, f);
+              const ref::Verdict v =
+                  error ? ref::clause::TOL_1_verdict((*error / eps).toDouble(), fc->bars) : ref::Verdict::fail;
+              if ((fv->worst == ref::Verdict::pass && v != ref::Verdict::pass) ||
+                  (fv->best != ref::Verdict::pass && v == ref::Verdict::pass)) {
+                ++wrong;
+                if (first.empty())
+                  first = a.convention + ": fast " + std::to_string(static_cast<int>(fv->best)) + ".." +
+                          std::to_string(static_cast<int>(fv->worst)) + ", MPFR " + std::to_string(static_cast<int>(v)) +
+                          " at " + std::to_string(k) + " eps off: " + where;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  return wrong;
+}
+
+TEST(FastOracle, AcceptableAnswersAgreeWithTheirConventions) {
+  RC_CLAUSE("ACC-1");
+  RC_CLAUSE("EDGE-3");
+  std::size_t decided = 0;
+  std::string first;
+  EXPECT_EQ(acceptable_answer_disagreements(decided, first), 0u) << first;
+  EXPECT_GT(decided, 0u) << "no observation at a hemisphere tie was decided at the fast level";
+  std::printf("ACC-1 at the fast level: %zu observations decided against a convention's answer\n", decided);
 }
 
 /// MAT-2's eigenvector at the fast level is proved, not trusted (reference/bounded_from_matrix.hpp):

@@ -400,16 +400,8 @@ std::vector<AcceptableConvention> build_conventions() {
   // spec breaks the tie one way ("flip iff a.b < 0 strictly"), a library may break it the other.
   const auto pairwise = [](const AbiOp& op) { return op.name == "slerp" || op.name == "nlerp"; };
   all.push_back({"hemisphere_tie", "at a hemisphere tie (|a.b| <= 8 eps) the other hemisphere is taken", false,
-                 [pairwise](const AbiOp& op) {
-                   return pairwise(op) || op.name == "dq_sclerp" || op.name == "blend_qlb" || op.name == "blend_log" ||
-                          op.name == "dq_blend" || op.name == "skin_dual_quaternion";
-                 },
-                 [pairwise](const AbiOp& op, const Case& c, ref::Format f) {
-                   if (!all_finite(c)) return false;
-                   if (pairwise(op) || op.name == "dq_sclerp") return near_tie(normalised_dot(c.inputs[0], 0, c.inputs[1], 0), f);
-                   const std::size_t wa = input_index(op, "w");
-                   return !tied_influences(c, 0, wa, op.name == "dq_blend" ? 8 : 4, f).empty();
-                 },
+                 hemisphere_tie_applies,
+                 [](const AbiOp& op, const Case& c, ref::Format f) { return hemisphere_tie_at_stake(op, c, f); },
                  [pairwise](const AbiOp& op, const Case& c, const Values& got, const Values&,
                             ref::Format f) -> std::optional<Real> {
                    if (!all_finite(c)) return std::nullopt;
@@ -431,28 +423,10 @@ std::vector<AcceptableConvention> build_conventions() {
                      }
                      return unit_rotation_error(got[0], other);
                    }
-                   // Blends and ScLERP: the other side of an exact tie is the reference on the
-                   // tied influence negated (a dot of -0 does not flip).
-                   Values in = c.inputs;
-                   if (op.name == "dq_sclerp") {
-                     if (normalised_dot(c.inputs[0], 0, c.inputs[1], 0) != 0) return std::nullopt;
-                     for (Real& x : in[1]) x = -x;
-                   } else {
-                     const std::size_t wa = input_index(op, "w");
-                     const int s = op.name == "dq_blend" ? 8 : 4;
-                     bool any = false;
-                     for (std::size_t i : tied_influences(c, 0, wa, s, f)) {
-                       const long p = pivot_of(c.inputs[wa]);
-                       std::vector<Real> reals;
-                       for (std::size_t j = 0; j < 4; ++j) reals.push_back(c.inputs[0][i * s + j]);
-                       for (std::size_t j = 0; j < 4; ++j) reals.push_back(c.inputs[0][std::size_t(p) * s + j]);
-                       if (normalised_dot(reals, 0, reals, 1) != 0) continue;
-                       for (int j = 0; j < s; ++j) in[0][i * s + j] = -in[0][i * s + j];
-                       any = true;
-                     }
-                     if (!any) return std::nullopt;
-                   }
-                   const ReferenceResult alt = op.reference(in, c.k);
+                   // Blends and ScLERP: the reference on the exactly tied influences negated.
+                   const std::optional<Values> in = hemisphere_tie_flipped_inputs(op, c, f);
+                   if (!in) return std::nullopt;
+                   const ReferenceResult alt = op.reference(*in, c.k);
                    if (alt.status != ref::Status::ok) return std::nullopt;
                    return output_error(op, got, alt.outputs, c, f);
                  }});
@@ -585,6 +559,44 @@ std::vector<std::string> acceptable_for_case(const AbiOp& op, const Case& c, ref
     if (a.outside_domain == outside && a.applies(op) && a.relevant(op, c, want.outputs, f))
       ids.push_back(a.id);
   return ids;
+}
+
+std::optional<Values> hemisphere_tie_flipped_inputs(const AbiOp& op, const Case& c, ref::Format f) {
+  if (!all_finite(c) || op.name == "slerp" || op.name == "nlerp") return std::nullopt;
+  // The other side of an exact tie (a dot of -0 does not flip).
+  Values in = c.inputs;
+  if (op.name == "dq_sclerp") {
+    if (normalised_dot(c.inputs[0], 0, c.inputs[1], 0) != 0) return std::nullopt;
+    for (Real& x : in[1]) x = -x;
+    return in;
+  }
+  const std::size_t wa = input_index(op, "w");
+  const int s = op.name == "dq_blend" ? 8 : 4;
+  bool any = false;
+  for (std::size_t i : tied_influences(c, 0, wa, s, f)) {
+    const long p = pivot_of(c.inputs[wa]);
+    std::vector<Real> reals;
+    for (std::size_t j = 0; j < 4; ++j) reals.push_back(c.inputs[0][i * s + j]);
+    for (std::size_t j = 0; j < 4; ++j) reals.push_back(c.inputs[0][std::size_t(p) * s + j]);
+    if (normalised_dot(reals, 0, reals, 1) != 0) continue;
+    for (int j = 0; j < s; ++j) in[0][i * s + j] = -in[0][i * s + j];
+    any = true;
+  }
+  if (!any) return std::nullopt;
+  return in;
+}
+
+bool hemisphere_tie_applies(const AbiOp& op) {
+  return op.name == "slerp" || op.name == "nlerp" || op.name == "dq_sclerp" || op.name == "blend_qlb" ||
+         op.name == "blend_log" || op.name == "dq_blend" || op.name == "skin_dual_quaternion";
+}
+
+bool hemisphere_tie_at_stake(const AbiOp& op, const Case& c, ref::Format f) {
+  if (!hemisphere_tie_applies(op) || !all_finite(c)) return false;
+  if (op.name == "slerp" || op.name == "nlerp" || op.name == "dq_sclerp")
+    return near_tie(normalised_dot(c.inputs[0], 0, c.inputs[1], 0), f);
+  const std::size_t wa = input_index(op, "w");
+  return !tied_influences(c, 0, wa, op.name == "dq_blend" ? 8 : 4, f).empty();
 }
 
 }  // namespace rotorcert::engine

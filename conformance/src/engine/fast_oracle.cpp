@@ -377,4 +377,46 @@ bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f) {
   return false;
 }
 
+std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp& op, const Case& c,
+                                                                     const BoundedValues& in, ref::Format f) {
+  std::vector<AcceptableAnswer> answers;
+  for (const AcceptableConvention& a : acceptable_conventions()) {
+    if (a.outside_domain || a.declared_only || !a.applies(op)) continue;
+    const std::optional<bool> relevant = a.relevant.of_input(op, c, f);
+    if (relevant && !*relevant) continue;
+    // endpoint_sign's error is defined only under SLERP-3's signed measure.
+    if (a.id == "endpoint_sign" && relevant && op.outputs.at(0).measure != Measure::signed_unit_rotation) continue;
+    if (a.id != "hemisphere_tie" || !relevant) return std::nullopt;  // no fast form: MPFR's to judge
+    if (op.name == "slerp" || op.name == "nlerp") {
+      // As the convention's error: the interpolation of the normalised inputs with the spec's flip
+      // (decided on the exact inputs) reversed, measured as METRIC-1 and METRIC-6.
+      if (op.outputs.at(0).measure != Measure::unit_rotation) return std::nullopt;
+      const auto exact = [](const std::vector<Real>& v) { return ref::Quaternion<Real>{v[3], v[0], v[1], v[2]}; };
+      const bool spec_flip = ref::hemisphere_sign(exact(c.inputs[0]), exact(c.inputs[1])) < 0;
+      const ref::BoundedScope scope;
+      const BQuat qa = ref::normalized(quat(in[0])), qb = ref::normalized(quat(in[1]));
+      const Bounded& t = in[2][0];
+      BQuat other;
+      if (op.name == "slerp") {
+        other = clause::detail::quaternion(
+            clause::detail::rotor_interpolation(clause::detail::rotor(qa), clause::detail::rotor(qb), t, !spec_flip));
+      } else {
+        const BQuat bb = spec_flip ? qb : -qb;
+        other = ref::normalized(BQuat{(Bounded(1) - t) * qa.w + t * bb.w, (Bounded(1) - t) * qa.x + t * bb.x,
+                                      (Bounded(1) - t) * qa.y + t * bb.y, (Bounded(1) - t) * qa.z + t * bb.z});
+      }
+      if (!scope.decided()) return std::nullopt;
+      answers.push_back({a.id, {ref::Status::ok, {flat(other)}}});
+      continue;
+    }
+    const std::optional<Values> flipped = hemisphere_tie_flipped_inputs(op, c, f);
+    if (!flipped) continue;  // no influence at an exact tie: the convention's error is undefined
+    std::optional<FastReference> r = fast_reference(op, bounded_values(*flipped), c.k);
+    if (!r) return std::nullopt;
+    if (r->status != ref::Status::ok) continue;  // (undefined too)
+    answers.push_back({a.id, std::move(*r)});
+  }
+  return answers;
+}
+
 }  // namespace rotorcert::engine

@@ -110,6 +110,17 @@ struct AcceptableConvention {
 };
 const std::vector<AcceptableConvention>& acceptable_conventions();
 
+/// ACC-1 hemisphere_tie on a blend or ScLERP: the case's inputs with every influence (ScLERP: b)
+/// whose real part's dot with the pivot's (with a's) is exactly 0 negated, the reference on which
+/// is the other branch of the tie. nullopt where none is (and for slerp and nlerp, whose other
+/// branch is the interpolation with the flip forced the other way).
+std::optional<Values> hemisphere_tie_flipped_inputs(const AbiOp& op, const Case& c, ref::Format f);
+/// The ops ACC-1 hemisphere_tie applies to: those with a hemisphere rule.
+bool hemisphere_tie_applies(const AbiOp& op);
+/// ACC-1 hemisphere_tie's relevance: an op it applies to, with a dot of the real parts within the
+/// tie band (8 eps).
+bool hemisphere_tie_at_stake(const AbiOp& op, const Case& c, ref::Format f);
+
 /// The ids of the acceptable conventions that can apply to this case at all (for the vectors'
 /// `result` field: a case with any is "acceptable", else "valid").
 std::vector<std::string> acceptable_for_case(const AbiOp& op, const Case& c, ref::Format f);

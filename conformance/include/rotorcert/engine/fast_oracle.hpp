@@ -95,6 +95,21 @@ std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const C
 /// answer counts always.
 bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f);
 
+/// The answers besides the spec's that the acceptable conventions (ACC-1) relevant to case `c`
+/// accept, in Bounded arithmetic on `in` (c's inputs as exact Bounded values), in the order in
+/// which judge_case_against consults the conventions; a convention whose error is undefined on c
+/// gives none. An observation's error against such an answer (fast_verdicts_of_rounding with the
+/// answer as `want`) is that convention's error. Today hemisphere_tie has a fast form (the other
+/// branch of a tie: slerp and nlerp with the flip forced the other way, a blend or ScLERP on the
+/// exactly tied influences negated); nullopt where a relevant convention has none, or where an
+/// answer is undecided.
+struct AcceptableAnswer {
+  std::string convention;  // the AcceptableConvention's id
+  FastReference answer;
+};
+std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp& op, const Case& c,
+                                                                     const BoundedValues& in, ref::Format f);
+
 /// For the agreement test only: a deliberately broken fast level, which the test must catch.
 enum class FastOracleMutation { none, bound_too_small, wrong_term };
 void set_fast_oracle_mutation(FastOracleMutation m);
