@@ -409,18 +409,9 @@ std::vector<AcceptableConvention> build_conventions() {
                      const Real d = normalised_dot(c.inputs[0], 0, c.inputs[1], 0);
                      if (!near_tie(d, f)) return std::nullopt;
                      // The other branch: b' = -(the spec's b').
-                     const Quat a = unit(quat(c.inputs[0])), b = unit(quat(c.inputs[1]));
                      const bool spec_flip = ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
-                     const Real t = c.inputs[2][0];
-                     Quat other;
-                     if (op.name == "slerp") {
-                       other = clause::detail::quaternion(
-                           clause::detail::rotor_interpolation(clause::detail::rotor(a), clause::detail::rotor(b), t, !spec_flip));
-                     } else {
-                       const Quat bb = spec_flip ? b : -b;
-                       other = ref::normalized(Quat{(Real(1) - t) * a.w + t * bb.w, (Real(1) - t) * a.x + t * bb.x,
-                                                    (Real(1) - t) * a.y + t * bb.y, (Real(1) - t) * a.z + t * bb.z});
-                     }
+                     const Quat other = hemisphere_tie_other_branch(op.name == "slerp", quat(c.inputs[0]),
+                                                                    quat(c.inputs[1]), c.inputs[2][0], spec_flip);
                      return unit_rotation_error(got[0], other);
                    }
                    // Blends and ScLERP: the reference on the exactly tied influences negated.

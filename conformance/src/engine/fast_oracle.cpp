@@ -394,17 +394,7 @@ std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp
       const auto exact = [](const std::vector<Real>& v) { return ref::Quaternion<Real>{v[3], v[0], v[1], v[2]}; };
       const bool spec_flip = ref::hemisphere_sign(exact(c.inputs[0]), exact(c.inputs[1])) < 0;
       const ref::BoundedScope scope;
-      const BQuat qa = ref::normalized(quat(in[0])), qb = ref::normalized(quat(in[1]));
-      const Bounded& t = in[2][0];
-      BQuat other;
-      if (op.name == "slerp") {
-        other = clause::detail::quaternion(
-            clause::detail::rotor_interpolation(clause::detail::rotor(qa), clause::detail::rotor(qb), t, !spec_flip));
-      } else {
-        const BQuat bb = spec_flip ? qb : -qb;
-        other = ref::normalized(BQuat{(Bounded(1) - t) * qa.w + t * bb.w, (Bounded(1) - t) * qa.x + t * bb.x,
-                                      (Bounded(1) - t) * qa.y + t * bb.y, (Bounded(1) - t) * qa.z + t * bb.z});
-      }
+      const BQuat other = hemisphere_tie_other_branch(op.name == "slerp", quat(in[0]), quat(in[1]), in[2][0], spec_flip);
       if (!scope.decided()) return std::nullopt;
       answers.push_back({a.id, {ref::Status::ok, {flat(other)}}});
       continue;

@@ -25,6 +25,7 @@
 #include <rotorcert/engine/cases.hpp>
 #include <rotorcert/impl_abi.h>
 #include <rotorcert/reference/metrics.hpp>
+#include <rotorcert/reference/rotation_ops.hpp>
 
 namespace rotorcert::engine {
 
@@ -115,6 +116,20 @@ const std::vector<AcceptableConvention>& acceptable_conventions();
 /// is the other branch of the tie. nullopt where none is (and for slerp and nlerp, whose other
 /// branch is the interpolation with the flip forced the other way).
 std::optional<Values> hemisphere_tie_flipped_inputs(const AbiOp& op, const Case& c, ref::Format f);
+/// ACC-1 hemisphere_tie's other branch of slerp (else nlerp): the interpolation of qa/|qa| and
+/// qb/|qb| with the spec's flip of b (`spec_flip`, decided on the exact inputs) reversed. One
+/// formula for the convention's MPFR error and its fast form (T = ref::Bounded).
+template <class T>
+ref::Quaternion<T> hemisphere_tie_other_branch(bool slerp, const ref::Quaternion<T>& qa, const ref::Quaternion<T>& qb,
+                                               const T& t, bool spec_flip) {
+  namespace detail = ref::clause::detail;
+  const ref::Quaternion<T> a = ref::normalized(qa), b = ref::normalized(qb);
+  if (slerp) return detail::quaternion(detail::rotor_interpolation(detail::rotor(a), detail::rotor(b), t, !spec_flip));
+  const ref::Quaternion<T> bb = spec_flip ? b : -b;
+  return ref::normalized(ref::Quaternion<T>{(T(1) - t) * a.w + t * bb.w, (T(1) - t) * a.x + t * bb.x,
+                                            (T(1) - t) * a.y + t * bb.y, (T(1) - t) * a.z + t * bb.z});
+}
+
 /// The ops ACC-1 hemisphere_tie applies to: those with a hemisphere rule.
 bool hemisphere_tie_applies(const AbiOp& op);
 /// ACC-1 hemisphere_tie's relevance: an op it applies to, with a dot of the real parts within the
