@@ -34,9 +34,6 @@
 // engine's EDGE-3 cases judge exact ties.
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include <functional>
 #include <string>
 #include <vector>

@@ -409,9 +409,9 @@ std::vector<AcceptableConvention> build_conventions() {
                      const Real d = normalised_dot(c.inputs[0], 0, c.inputs[1], 0);
                      if (!near_tie(d, f)) return std::nullopt;
                      // The other branch: b' = -(the spec's b').
-                     const bool spec_flip = ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
                      const Quat other = hemisphere_tie_other_branch(op.name == "slerp", quat(c.inputs[0]),
-                                                                    quat(c.inputs[1]), c.inputs[2][0], spec_flip);
+                                                                    quat(c.inputs[1]), c.inputs[2][0],
+                                                                    hemisphere_rule_flips_b(c));
                      return unit_rotation_error(got[0], other);
                    }
                    // Blends and ScLERP: the reference on the exactly tied influences negated.
@@ -438,10 +438,10 @@ std::vector<AcceptableConvention> build_conventions() {
   // from a to b itself, the long arc where a.b < 0. Undefined at an exact antipode.
   all.push_back({"oriented", "the interpolation is oriented: from a to b itself, no hemisphere flip (declared)", true, pairwise,
                  [](const AbiOp&, const Case& c, ref::Format) {
-                   return all_finite(c) && ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
+                   return all_finite(c) && hemisphere_rule_flips_b(c);
                  },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
-                   if (!all_finite(c) || ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) >= 0) return std::nullopt;
+                   if (!all_finite(c) || !hemisphere_rule_flips_b(c)) return std::nullopt;
                    const Quat a = unit(quat(c.inputs[0])), b = unit(quat(c.inputs[1]));
                    if (ref::dot(a, b) <= Real(-1)) return std::nullopt;  // antipodes: no oriented arc
                    const Real t = c.inputs[2][0];
@@ -575,6 +575,10 @@ std::optional<Values> hemisphere_tie_flipped_inputs(const AbiOp& op, const Case&
   }
   if (!any) return std::nullopt;
   return in;
+}
+
+bool hemisphere_rule_flips_b(const Case& c) {
+  return ref::hemisphere_sign(quat(c.inputs[0]), quat(c.inputs[1])) < 0;
 }
 
 bool hemisphere_tie_applies(const AbiOp& op) {

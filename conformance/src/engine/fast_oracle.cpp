@@ -391,10 +391,9 @@ std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp
       // As the convention's error: the interpolation of the normalised inputs with the spec's flip
       // (decided on the exact inputs) reversed, measured as METRIC-1 and METRIC-6.
       if (op.outputs.at(0).measure != Measure::unit_rotation) return std::nullopt;
-      const auto exact = [](const std::vector<Real>& v) { return ref::Quaternion<Real>{v[3], v[0], v[1], v[2]}; };
-      const bool spec_flip = ref::hemisphere_sign(exact(c.inputs[0]), exact(c.inputs[1])) < 0;
       const ref::BoundedScope scope;
-      const BQuat other = hemisphere_tie_other_branch(op.name == "slerp", quat(in[0]), quat(in[1]), in[2][0], spec_flip);
+      const BQuat other =
+          hemisphere_tie_other_branch(op.name == "slerp", quat(in[0]), quat(in[1]), in[2][0], hemisphere_rule_flips_b(c));
       if (!scope.decided()) return std::nullopt;
       answers.push_back({a.id, {ref::Status::ok, {flat(other)}}});
       continue;

@@ -130,6 +130,10 @@ ref::Quaternion<T> hemisphere_tie_other_branch(bool slerp, const ref::Quaternion
                                             (T(1) - t) * a.y + t * bb.y, (T(1) - t) * a.z + t * bb.z});
 }
 
+/// Whether slerp's and nlerp's hemisphere rule (SLERP-1, EDGE-3) negates b: a.b < 0 strictly, on
+/// the exact inputs c.inputs[0] and [1].
+bool hemisphere_rule_flips_b(const Case& c);
+
 /// The ops ACC-1 hemisphere_tie applies to: those with a hemisphere rule.
 bool hemisphere_tie_applies(const AbiOp& op);
 /// ACC-1 hemisphere_tie's relevance: an op it applies to, with a dot of the real parts within the
