@@ -95,19 +95,6 @@ Real dq_log_scale(const Values& in, std::size_t) {
   return std::max({Real(1), Real(length(xi.real) + length(xi.dual)), Real(kappa * length(V3{u.dual.x, u.dual.y, u.dual.z}))});
 }
 
-/// SQRT-1: for finite nonzero q with q^ = q/|q| != -1, s = (1 + q^)/|1 + q^| (the unique s with
-/// s^2 = q^ and s.w > 0: half the angle of AXANG-1 about the same axis); q^ = -1 (v = 0, w < 0):
-/// s = (0, 0, 1, 0), +z exactly (LOG-2's axis). 1 + w^ is formed as |v^|^2 / (1 - w^) for w^ < 0,
-/// without cancellation.
-ref::Result<Quat> sqrt_reference(const Quat& q) {
-  if (!ref::finite(q) || ref::is_zero(q)) return ref::domain_error<Quat>();
-  if (q.x == 0 && q.y == 0 && q.z == 0 && q.w < 0) return {Quat{Real(0), Real(0), Real(0), Real(1)}, ref::Status::ok};
-  const Quat u = ref::normalized(q);
-  const Real v2 = u.x * u.x + u.y * u.y + u.z * u.z;
-  const Real a = u.w >= 0 ? Real(1) + u.w : v2 / (Real(1) - u.w);
-  return {ref::normalized(Quat{a, u.x, u.y, u.z}), ref::Status::ok};
-}
-
 std::vector<AbiOp> build() {
   const Array q{"q", 4}, a{"a", 4}, b{"b", 4}, v{"v", 3}, t{"t", 1}, m{"m", 9}, da{"a", 8}, db{"b", 8}, d{"d", 8};
   auto out = [](const char* name, int stride, Measure measure) { return Array{name, stride, false, measure}; };
@@ -225,7 +212,7 @@ std::vector<AbiOp> build() {
          return ReferenceResult{r.status, {flat(r.value.axis)}};
        }, {}});
   add({"sqrt", {q}, {out("out_q", 4, Measure::canonical_rotation)}, false,
-       [](const Values& in, std::size_t) { return one(sqrt_reference(quat(in[0]))); }, {}});
+       [](const Values& in, std::size_t) { return one(clause::SQRT_1_sqrt(quat(in[0]))); }, {}});
   add({"dq_to_rotation_translation", {d}, {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)},
        false,
        [](const Values& in, std::size_t) { return pair(clause::DQ_7_to_rotation_translation(dq(in[0]))); },

@@ -60,10 +60,9 @@ using FastFn = std::function<FastReference(const BoundedValues& in, std::size_t 
 
 /// The closed-form ops: the same clause templates as abi_ops.cpp's MPFR lambdas (DQ-8's and
 /// DQ-9's branches at |r_v| = 0 and b = 0 are decided wherever the bound keeps away from 0, every
-/// case the suite generates: conformance_test_fast_oracle). Not here: from_matrix (an iterative
-/// eigenvector), sqrt (an engine-side reference), and rotate_about_axis, whose reference takes
-/// exact-zero branches (the PGA sandwich) that a bound cannot settle: the fast level decided under
-/// a quarter of its cases.
+/// case the suite generates: conformance_test_fast_oracle). Not here: rotate_about_axis, whose
+/// reference takes exact-zero branches (the PGA sandwich) that a bound cannot settle: the fast
+/// level decided under a quarter of its cases.
 const std::map<std::string, FastFn>& fast_ops() {
   static const std::map<std::string, FastFn> ops = {
       {"normalize", [](const BoundedValues& in, std::size_t) { return one(clause::NORM_1_normalize(quat(in[0]))); }},
@@ -95,6 +94,7 @@ const std::map<std::string, FastFn>& fast_ops() {
        }},
       {"from_axis_angle",
        [](const BoundedValues& in, std::size_t) { return one(clause::AXANG_2_from_axis_angle(in[0][0], vec3(in[1]))); }},
+      {"sqrt", [](const BoundedValues& in, std::size_t) { return one(clause::SQRT_1_sqrt(quat(in[0]))); }},
       {"log", [](const BoundedValues& in, std::size_t) { return one(clause::LOG_1_log(quat(in[0]))); }},
       {"exp", [](const BoundedValues& in, std::size_t) { return one(clause::EXP_1_exp(vec3(in[0]))); }},
       {"slerp",

@@ -428,6 +428,20 @@ Result<Quaternion<T>> AXANG_2_from_axis_angle(const T& angle, const Vec3<T>& axi
   return {detail::quaternion(r.value), Status::ok};
 }
 
+/// SQRT-1: for finite nonzero q with R = Phi(q/|q|) != -1, the rotor square root (1 + R)/|1 + R|
+/// (the unique s with s^2 = q/|q| and s.w > 0: half the angle of AXANG-1 about the same axis);
+/// R = -1 (v = 0, w < 0): s = (0, 0, 1, 0), +z exactly (LOG-2's axis). Formed in the quaternion
+/// view; 1 + w is formed as |v|^2 / (1 - w) for w < 0, without cancellation.
+template <class T>
+Result<Quaternion<T>> SQRT_1_sqrt(const Quaternion<T>& q) {
+  if (!finite(q) || is_zero(q)) return domain_error<Quaternion<T>>();
+  if (q.x == 0 && q.y == 0 && q.z == 0 && q.w < 0) return {Quaternion<T>{T(0), T(0), T(0), T(1)}, Status::ok};
+  const Quaternion<T> u = normalized(q);
+  const T v2 = u.x * u.x + u.y * u.y + u.z * u.z;
+  const T a = u.w >= 0 ? T(1) + u.w : v2 / (T(1) - u.w);
+  return {normalized(Quaternion<T>{a, u.x, u.y, u.z}), Status::ok};
+}
+
 // ---- the quaternion <-> rotor map -------------------------------------------------------
 
 /// Q2R-1: Phi(q) = w - x e23 - y e31 - z e12 (exact, no normalisation).
