@@ -422,21 +422,21 @@ engine::BoundedValues bounded_inputs(const Decoded& d, std::size_t e) {
 /// how_to_judge from the fast level (engine/fast_oracle.hpp): the same decisions, each taken only
 /// where the bounds settle it. A perturbation the bounds do not settle is taken at the MPFR level
 /// alone (mpfr_perturbation against `mpfr_want()`, the element's exact reference, computed on first
-/// use), so the answer is how_to_judge's and the other perturbations stay cheap. nullopt (the whole
-/// element to MPFR) only where an output is too near the headroom threshold to read. A perturbed
+/// use), so the answer is how_to_judge's and the other perturbations stay cheap. A perturbed
 /// result's verdict is taken at the fast level only where every way its exact value may round to
 /// the format gives it. The caller has taken how_to_judge's first test (a numerically singular
 /// matrix: nothing judged), which needs no reference.
-std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
-                                       const engine::BoundedValues& in, const engine::FastReference& want,
-                                       const std::optional<engine::FastCase>& fc,
-                                       const std::function<const engine::ReferenceResult&()>& mpfr_want) {
+Judge how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f,
+                        const engine::BoundedValues& in, const engine::FastReference& want,
+                        const std::optional<engine::FastCase>& fc,
+                        const std::function<const engine::ReferenceResult&()>& mpfr_want) {
   const Real u = ref::format_epsilon<Real>(f) / Real(2);
   const bool ok = want.status == ref::Status::ok;
   // within_headroom compares each exact output's magnitude with 2^(emax - 8): an output whose
-  // interval lies above it settles "no headroom" whatever the rest; one whose interval holds it
-  // cannot be read here. The inputs are exact: within_headroom reads them as they are.
-  bool outputs_beyond = false;
+  // interval lies above it settles "no headroom" whatever the rest; one whose interval holds it is
+  // read from the element's MPFR reference (one evaluation: the perturbations stay at the fast
+  // level). The inputs are exact: within_headroom reads them as they are.
+  bool outputs_beyond = false, outputs_unread = false;
   if (ok) {
     const long double big = std::ldexp(1.0L, headroom_exponent(f));
     for (const auto& arr : want.outputs)
@@ -445,10 +445,10 @@ std::optional<Judge> how_to_judge_fast(const AbiOp& op, const spec::ToleranceCla
         constexpr long double lu = ref::Bounded::kU;
         const long double spread = y.bound() * (1 + 4 * lu);
         if ((std::fabs(y.value()) - spread) * (1 - 4 * lu) > big) outputs_beyond = true;
-        else if ((std::fabs(y.value()) + spread) * (1 + 4 * lu) > big) return std::nullopt;
+        else if ((std::fabs(y.value()) + spread) * (1 + 4 * lu) > big) outputs_unread = true;
       }
   }
-  const bool headroom = !outputs_beyond && within_headroom(op, c.inputs, {}, f);
+  const bool headroom = !outputs_beyond && within_headroom(op, c.inputs, outputs_unread ? mpfr_want().outputs : engine::Values{}, f);
   // As in how_to_judge: t or exp's angle beyond the strict bar first, so the perturbations
   // compare statuses only.
   bool numbers = ok && headroom && !multiplied_rounding_beyond_strict_bar(op, tc, c, f);
@@ -759,15 +759,21 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
     } else if (mode != OracleMode::mpfr) {
       in = bounded_inputs(d, e);
       fast[e] = engine::fast_reference(op, in, d.k);
+      // Undecided (a branch the element's own bound cannot settle): its MPFR reference is the
+      // fast level's want, so that the perturbations, most of which the bounds still settle, stay
+      // at the fast level, and so do the tables' verdicts.
+      if (!fast[e]) {
+        if (fuzz_debug())
+          std::fprintf(stderr, "fast oracle: %s: the element's reference is undecided; its MPFR reference is the want: %s\n",
+                       op.name.c_str(), engine::describe_inputs(op, d.exact_case(e), f).c_str());
+        fast[e] = engine::fast_reference_from(op, mpfr_want(e));
+      }
     }
     if (fast[e]) {
       fast_case[e] = engine::fast_case(op, tc, d.exact_case(e), f);
       j = how_to_judge_fast(op, tc, d.exact_case(e), f, in, *fast[e], fast_case[e],
                             [&]() -> const engine::ReferenceResult& { return mpfr_want(e); });
     }
-    if (!j && mode == OracleMode::fast && fuzz_debug())
-      std::fprintf(stderr, "fast oracle: %s: %s; the whole element goes to MPFR\n", op.name.c_str(),
-                   fast[e] ? "an output is too near the headroom threshold" : "the element's reference is undecided");
     if (!j || mode == OracleMode::both) {
       const Judge m = how_to_judge(op, tc, d.exact_case(e), f, [&]() -> const engine::ReferenceResult& { return mpfr_want(e); });
       if (j && *j != m)

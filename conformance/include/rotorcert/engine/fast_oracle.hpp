@@ -43,6 +43,11 @@ std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues
 ref::Bounded bounded_value(const Real& x);
 BoundedValues bounded_values(const Values& v);
 
+/// An MPFR reference result held as a FastReference, for an element whose fast reference is
+/// undecided: each output's interval holds both MPFR's value and the exact one (within 2^-240 of
+/// its magnitude), so what is decided against it is decided against either.
+FastReference fast_reference_from(const AbiOp& op, const ReferenceResult& r);
+
 /// The exact value nearest to each fast output (for the checks that read magnitudes).
 Values fast_values(const FastReference& r);
 
