@@ -10,6 +10,8 @@
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
+#include "rigid_scales.hpp"
+
 namespace rotorcert::engine {
 namespace {
 
@@ -80,20 +82,7 @@ ReferenceResult pair(const ref::Result<ref::RotationTranslation<Real>>& r) {
   return {r.status, {flat(r.value.q), flat(r.value.t)}};
 }
 
-/// DQ-8's error scale: max(1, |xi_ref|, kappa |d_v|) with kappa = b / sin b, (r, d) = DQ-4(sigma),
-/// b = atan2(|r_v|, r_w). xi_d holds (b / sin b) d_perp, so an error of eps |d_v| in the dual part
-/// (the rounding of the input itself) becomes kappa eps |d_v|: the log's own condition near the
-/// branch cut b = pi, where no implementation in the format can do better. kappa = 1 at the cut
-/// itself (sin b = 0: the spec's choice of axis, no amplification).
-Real dq_log_scale(const Values& in, std::size_t) {
-  const DQ sigma = dq(in[0]);
-  if (!ref::finite(sigma) || ref::is_zero(sigma.real)) return Real(1);
-  const DQ u = clause::DQ_4_normalize(sigma).value;
-  const auto xi = clause::DQ_8_log(sigma).value;
-  const Real s = length(V3{u.real.x, u.real.y, u.real.z});
-  const Real kappa = s == 0 ? Real(1) : std::max(Real(1), Real(atan2(s, u.real.w) / s));
-  return std::max({Real(1), Real(length(xi.real) + length(xi.dual)), Real(kappa * length(V3{u.dual.x, u.dual.y, u.dual.z}))});
-}
+Real dq_log_scale(const Values& in, std::size_t) { return rigid_scales::dq_log_scale(dq(in[0])); }
 
 std::vector<AbiOp> build() {
   const Array q{"q", 4}, a{"a", 4}, b{"b", 4}, v{"v", 3}, t{"t", 1}, m{"m", 9}, da{"a", 8}, db{"b", 8}, d{"d", 8};
@@ -216,11 +205,7 @@ std::vector<AbiOp> build() {
   add({"dq_to_rotation_translation", {d}, {out("out_q", 4, Measure::unit_rotation), out("out_t", 3, Measure::point)},
        false,
        [](const Values& in, std::size_t) { return pair(clause::DQ_7_to_rotation_translation(dq(in[0]))); },
-       [](const Values& in, std::size_t) {
-         const DQ sigma = dq(in[0]);
-         if (!ref::finite(sigma) || ref::is_zero(sigma.real)) return Real(1);
-         return std::max(Real(1), length(clause::dual_quaternion_translation(sigma)));
-       }});
+       [](const Values& in, std::size_t) { return rigid_scales::dq_translation_scale(dq(in[0])); }});
   // ---- ABI version 4 ----
   const Array xi{"xi", 6}, rq{"q", 4}, rt{"t", 3};
   add({"dq_log", {d}, {out("out_xi", 6, Measure::point)}, false,

@@ -11,6 +11,8 @@
 #include <rotorcert/reference/rigid_ops.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
+#include "rigid_scales.hpp"
+
 namespace rotorcert::engine {
 namespace {
 
@@ -294,11 +296,30 @@ std::optional<std::vector<Values>> fast_roundings(const FastReference& r, ref::F
   return candidates;
 }
 
+namespace {
+
+/// The scale of a case (AbiOp::scale) in Bounded arithmetic, for the ops whose scale is a
+/// reference computation (rigid_scales.hpp: DQ-8's log, DQ-7's translation) rather than a max of
+/// input lengths, which MPFR forms cheaply. Widened by 2^-240 of its size, so that it holds MPFR's
+/// value as well as the exact one. nullopt for the other ops and where the bounds do not decide.
+std::optional<Bounded> fast_scale(const AbiOp& op, const Case& c) {
+  const bool log = op.name == "dq_log";
+  if (!log && op.name != "dq_to_rotation_translation") return std::nullopt;
+  const BoundedValues in = bounded_values(c.inputs);
+  const ref::BoundedScope scope;
+  const Bounded s = log ? rigid_scales::dq_log_scale(dq(in[0])) : rigid_scales::dq_translation_scale(dq(in[0]));
+  if (!scope.decided() || !std::isfinite(s.value())) return std::nullopt;
+  return Bounded(s.value(), s.bound() + std::ldexp(std::fabs(s.value()), -240) + Bounded::kTiny);
+}
+
+}  // namespace
+
 std::optional<FastCase> fast_case(const AbiOp& op, const spec::ToleranceClass& tc, const Case& c, ref::Format f) {
   if (tc.kind != "eps" && tc.kind != "formula") return std::nullopt;
   const Real eps = ref::format_epsilon<Real>(f);
-  return FastCase{bars_for(tc, op, c, eps), bounded_value(op.scale(c.inputs, c.k)),
-                  bounded_value(ref::format_min_normal<Real>(f)), eps.toLDouble()};
+  std::optional<Bounded> scale = fast_scale(op, c);
+  if (!scale) scale = bounded_value(op.scale(c.inputs, c.k));
+  return FastCase{bars_for(tc, op, c, eps), *scale, bounded_value(ref::format_min_normal<Real>(f)), eps.toLDouble()};
 }
 
 namespace {
