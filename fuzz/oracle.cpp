@@ -209,6 +209,17 @@ int emax_of(ref::Format f) { return f == ref::Format::binary32 ? 127 : 1023; }
 /// The magnitude beyond which an input or output has no headroom: 2^(emax - 8).
 int headroom_exponent(ref::Format f) { return emax_of(f) - 8; }
 
+/// Whether output array `a` of `op` is measured relative to its own size (componentwise relative
+/// error: compose's and inverse's products, a scalar): below the normal range the format holds
+/// it only to absolute precision (gradual underflow), so its size needs headroom from below too.
+bool relative_to_its_size(const AbiOp& op, std::size_t a) {
+  const engine::Measure m = op.outputs.at(a).measure;
+  return m == engine::Measure::quaternion || m == engine::Measure::scalar;
+}
+
+/// The norm below which such an output has no headroom: 2^(emin + 8), emin = 1 - emax.
+int underflow_exponent(ref::Format f) { return 1 - emax_of(f) + 8; }
+
 bool within_headroom(const AbiOp& op, const engine::Values& inputs, const engine::Values& outputs, ref::Format f) {
   const int emax = emax_of(f);
   const Real big = ldexp(Real(1), headroom_exponent(f));
@@ -237,6 +248,12 @@ bool within_headroom(const AbiOp& op, const engine::Values& inputs, const engine
   for (const auto& arr : outputs)
     for (const Real& y : arr)
       if (mpfr::isfinite(y) && abs(y) > big) return false;
+  const Real small = ldexp(Real(1), underflow_exponent(f));
+  for (std::size_t a = 0; a < outputs.size(); ++a) {
+    if (!relative_to_its_size(op, a)) continue;
+    const Real n = engine::block_norm(outputs[a], 0, outputs[a].size());
+    if (mpfr::isfinite(n) && n != 0 && n < small) return false;
+  }
   return true;
 }
 
@@ -447,6 +464,28 @@ Judge how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const C
         if ((std::fabs(y.value()) - spread) * (1 - 4 * lu) > big) outputs_beyond = true;
         else if ((std::fabs(y.value()) + spread) * (1 + 4 * lu) > big) outputs_unread = true;
       }
+    // An output measured relative to its size: its norm's interval [lo, hi] (from its components'
+    // intervals) against 2^(emin + 8) and 0, as within_headroom compares the exact norm.
+    const long double small = std::ldexp(1.0L, underflow_exponent(f));
+    for (std::size_t a = 0; a < want.outputs.size(); ++a) {
+      if (!relative_to_its_size(op, a)) continue;
+      constexpr long double lu = ref::Bounded::kU;
+      long double lo2 = 0, hi2 = 0;
+      bool exact_zero = true, finite = true;
+      for (const ref::Bounded& y : want.outputs[a]) {
+        if (!std::isfinite(y.value())) finite = false;
+        const long double spread = y.bound() * (1 + 4 * lu);
+        const long double lo = std::max(0.0L, (std::fabs(y.value()) - spread) * (1 - 4 * lu));
+        const long double hi = (std::fabs(y.value()) + spread) * (1 + 4 * lu);
+        lo2 += lo * lo, hi2 += hi * hi;
+        exact_zero = exact_zero && y.exact() && y.value() == 0;
+      }
+      if (!finite || exact_zero) continue;
+      const long double lo = std::sqrt(lo2) * (1 - 16 * lu), hi = std::sqrt(hi2) * (1 + 16 * lu);
+      if (lo >= small) continue;
+      if (hi < small && lo > 0) outputs_beyond = true;
+      else outputs_unread = true;
+    }
   }
   const bool headroom = !outputs_beyond && within_headroom(op, c.inputs, outputs_unread ? mpfr_want().outputs : engine::Values{}, f);
   // As in how_to_judge: t or exp's angle beyond the strict bar first, so the perturbations
