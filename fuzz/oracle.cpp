@@ -504,14 +504,32 @@ Judge how_to_judge_fast(const AbiOp& op, const spec::ToleranceClass& tc, const C
   // (fast_acceptable_answers, formed once per element): surely PASS against the first answer, or
   // surely not PASS against the spec's and every other answer.
   std::optional<std::optional<std::vector<engine::AcceptableAnswer>>> acceptable;
+  // A convention accepts a result when its verdict is not FAIL (where the spec's is a
+  // QUALITY_WARNING: when it is PASS); the first that accepts gives the verdict. So: agrees where
+  // a convention is surely PASS and every earlier one surely FAILs or says nothing; beyond the bar
+  // where the spec's verdict and every convention's are surely not PASS; else MPFR's to decide.
   auto judged_with_conventions = [&](const engine::FastVerdicts& v, const engine::FastReference& r, int pattern) {
-    if (!acceptable) acceptable = engine::fast_acceptable_answers(op, c, in, f);
+    if (!acceptable) acceptable = engine::fast_acceptable_answers(op, c, in, want, f);
     if (!*acceptable) return to_mpfr("an acceptable convention may be relevant and has no fast form", pattern);
     bool surely_not_pass = v.best != ref::Verdict::pass;
-    for (std::size_t i = 0; i < (*acceptable)->size(); ++i) {
-      const auto av = rounded_verdicts(op, *fc, r, f, (**acceptable)[i].answer);
-      if (i == 0 && av && av->worst == ref::Verdict::pass) return Perturbation::agrees;
+    bool earlier_decline = true;  // every earlier convention surely FAILs or says nothing
+    std::optional<std::optional<engine::BoundedValues>> got;  // r rounded, as intervals (on first use)
+    for (const engine::AcceptableAnswer& a : **acceptable) {
+      std::optional<engine::FastVerdicts> av;
+      if (a.answer) {
+        av = rounded_verdicts(op, *fc, r, f, *a.answer);
+      } else {
+        if (!got) got = engine::rounded_intervals(r, f);
+        if (*got) {
+          const ref::BoundedScope scope;
+          const std::optional<ref::Bounded> e = a.error(**got);
+          if (scope.decided() && !e) continue;  // says nothing about this result
+          if (scope.decided() && std::isfinite(e->value())) av = engine::fast_verdicts_of_error(*fc, *e);
+        }
+      }
+      if (earlier_decline && av && av->worst == ref::Verdict::pass) return Perturbation::agrees;
       if (!av || av->best == ref::Verdict::pass) surely_not_pass = false;
+      if (!av || av->best != ref::Verdict::fail) earlier_decline = false;
     }
     return surely_not_pass ? Perturbation::beyond_strict_bar
                            : to_mpfr("a perturbed result sits on the strict bar of the spec or a convention", pattern);

@@ -5,6 +5,7 @@
 // not PASS) is the MPFR judge's. A fast level with a too-small bound or a wrong term is caught.
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -235,9 +236,13 @@ std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& f
           if (!engine::hemisphere_tie_at_stake(op, c, f)) continue;
           const engine::ReferenceResult want = op.reference(c.inputs, c.k);
           const auto fc = engine::fast_case(op, tc, c, f);
-          const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), f);
-          if (want.status != ref::Status::ok || !fc || !answers) continue;
+          // As the fuzz oracle forms it: the fast reference, or MPFR's where that is undecided.
+          const auto fast_want = engine::fast_reference(op, c.inputs, c.k).value_or(engine::fast_reference_from(op, want));
+          if (want.status != ref::Status::ok || !fc) continue;
+          const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), fast_want, f);
+          if (!answers) continue;
           for (const engine::AcceptableAnswer& a : *answers) {
+            if (!a.answer) continue;  // a convention's own error: convention_error_violations
             const engine::AcceptableConvention* convention = nullptr;
             for (const engine::AcceptableConvention& x : engine::acceptable_conventions())
               if (x.id == a.convention && x.applies(op)) convention = &x;
@@ -250,12 +255,12 @@ std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& f
             for (const int k : {0, 3, 40, 2000}) {
               engine::Observed o;
               o.status = RC_OK;
-              o.outputs = engine::fast_values(a.answer);
+              o.outputs = engine::fast_values(*a.answer);
               for (auto& arr : o.outputs)
                 for (Real& x : arr) x = engine::round_to(f, x);
               Real& x = o.outputs[0][0];
               x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
-              const auto fv = engine::fast_verdicts(op, *fc, o, a.answer);
+              const auto fv = engine::fast_verdicts(op, *fc, o, *a.answer);
               if (!fv) continue;
               ++decided;
               const std::optional<Real> error = convention->error(op, c, o.outputs, want.outputs, f);
@@ -286,6 +291,107 @@ TEST(FastOracle, AcceptableAnswersAgreeWithTheirConventions) {
   EXPECT_EQ(acceptable_answer_disagreements(decided, first), 0u) << first;
   EXPECT_GT(decided, 0u) << "no observation at a hemisphere tie was decided at the fast level";
   std::printf("ACC-1 at the fast level: %zu observations decided against a convention's answer\n", decided);
+}
+
+/// ACC-1's conventions whose fast form is their own error (AcceptableConvention::fast_error): on
+/// the suite's cases of every op with a fast reference, for observations around the spec's answer
+/// (rounded to the format; 3, 40 and 2000 eps off in one component; each also negated, the other
+/// sign of a quaternion), the fast error says nothing exactly where the MPFR error does, and its
+/// interval holds the MPFR error (within 2^-200 of its size: MPFR's own rounding).
+std::size_t convention_error_violations(std::size_t& decided, std::set<std::string>& conventions, std::string& first) {
+  std::size_t wrong = 0;
+  engine::CaseOptions options;
+  options.cases_per_family = 16;
+  for (const spec::Clause& clause : the_spec().clauses) {
+    if (clause.level == "Meta") continue;
+    for (const ref::Format f : {ref::Format::binary32, ref::Format::binary64}) {
+      for (const engine::Check& check :
+           engine::checks_for_clause(the_spec(), clause.id, f, options, [](const std::string&) { return true; })) {
+        if (check.log_exp_round_trip || !engine::has_fast_reference(check.op)) continue;
+        const engine::AbiOp& op = engine::judged_op(check.clause, check.op);
+        const Real eps = ref::format_epsilon<Real>(f);
+        for (const engine::Case& c : check.cases) {
+          const engine::ReferenceResult want = op.reference(c.inputs, c.k);
+          if (want.status != ref::Status::ok) continue;
+          const auto fast_want = engine::fast_reference(op, c.inputs, c.k).value_or(engine::fast_reference_from(op, want));
+          const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), fast_want, f);
+          if (!answers) continue;
+          for (const engine::AcceptableAnswer& a : *answers) {
+            if (a.answer) continue;  // hemisphere_tie: acceptable_answer_disagreements
+            const engine::AcceptableConvention* convention = nullptr;
+            for (const engine::AcceptableConvention& x : engine::acceptable_conventions())
+              if (x.id == a.convention && x.applies(op)) convention = &x;
+            if (convention == nullptr) continue;
+            const std::string where = a.convention + " " + clause.id + " " + check.op + " [" + c.label + "] " +
+                                      engine::describe_inputs(op, c, f);
+            for (const int sign : {1, -1})
+              for (const int k : {0, 3, 40, 2000}) {
+                engine::Observed o;
+                o.status = RC_OK;
+                o.outputs = want.outputs;
+                for (auto& arr : o.outputs)
+                  for (Real& x : arr) x = engine::round_to(f, x);
+                Real& x = o.outputs[0][0];
+                x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+                if (sign < 0)
+                  for (Real& y : o.outputs[0]) y = -y;
+                engine::BoundedValues got;
+                bool finite = true;
+                for (const auto& arr : o.outputs) {
+                  got.emplace_back();
+                  for (const Real& y : arr) {
+                    finite = finite && mpfr::isfinite(y);
+                    got.back().push_back(ref::Bounded(y.toLDouble(), 0));
+                  }
+                }
+                if (!finite) continue;
+                const ref::BoundedScope scope;
+                const std::optional<ref::Bounded> fe = a.error(got);
+                if (!scope.decided()) continue;
+                const std::optional<Real> me = convention->error(op, c, o.outputs, want.outputs, f);
+                auto report = [&](const std::string& what) {
+                  ++wrong;
+                  if (first.empty()) first = what + " (sign " + std::to_string(sign) + ", " + std::to_string(k) + " eps off): " + where;
+                };
+                if (fe.has_value() != me.has_value()) {
+                  report(std::string("the fast error ") + (fe ? "says something, MPFR's nothing" : "says nothing, MPFR's something"));
+                  continue;
+                }
+                if (!fe || !std::isfinite(fe->value()) || mpfr::isnan(*me)) continue;
+                ++decided;
+                conventions.insert(a.convention + " (" + check.op + ")");
+                const Real off = abs(*me - Real(fe->value()));
+                if (!(off <= Real(fe->bound()) + ldexp(abs(*me), -200))) {
+                  report("MPFR error " + me->toString("%.6Rg") + " outside the fast " + Real(fe->value()).toString("%.6Rg") +
+                         " +- " + Real(fe->bound()).toString("%.3Rg"));
+                }
+              }
+          }
+        }
+      }
+    }
+  }
+  return wrong;
+}
+
+TEST(FastOracle, ConventionErrorsHoldTheirMpfrValues) {
+  RC_CLAUSE("ACC-1");
+  RC_CLAUSE("AXANG-1");
+  RC_CLAUSE("AXANG-4");
+  RC_CLAUSE("SQRT-1");
+  RC_CLAUSE("LOG-2");
+  RC_CLAUSE("DQ-8");
+  std::size_t decided = 0;
+  std::set<std::string> conventions;
+  std::string first;
+  EXPECT_EQ(convention_error_violations(decided, conventions, first), 0u) << first;
+  std::string seen;
+  for (const std::string& x : conventions) seen += (seen.empty() ? "" : ", ") + x;
+  std::printf("ACC-1 errors at the fast level: %zu observations decided; conventions: %s\n", decided, seen.c_str());
+  // Every convention with a fast error is exercised (its op's suite cases reach it).
+  for (const char* expected : {"angle_range (to_axis_angle)", "angle_range (to_axis)", "sign (sqrt)", "shorter_arc (log)",
+                               "shorter_arc (dq_log)", "sign (from_matrix)", "algebraic_root (sqrt)"})
+    EXPECT_TRUE(conventions.count(expected)) << expected << " was never decided at the fast level";
 }
 
 /// MAT-2's eigenvector at the fast level is proved, not trusted (reference/bounded_from_matrix.hpp):

@@ -59,6 +59,147 @@ Real normalised_dot(const std::vector<Real>& a, std::size_t ia, const std::vecto
   return ref::dot(qa, qb) / (na * nb);
 }
 
+// ---- the conventions' errors and answer-reading relevances, one formula at both levels -----
+// Templates on the scalar: the judge runs them on Real (MPFR) through `error` and `relevant`, the
+// fast oracle on ref::Bounded through `fast_error` and `fast_relevant`. Arrays<T> holds an op's
+// arrays as Values holds them in Real.
+
+template <class T>
+using Arrays = std::vector<std::vector<T>>;
+
+template <class T>
+ref::Quaternion<T> quat_of(const std::vector<T>& a, std::size_t i = 0) {
+  return {a[i * 4 + 3], a[i * 4], a[i * 4 + 1], a[i * 4 + 2]};
+}
+/// block_norm (abi_op.hpp) on either scalar.
+template <class T>
+T norm_of(const std::vector<T>& v, std::size_t from, std::size_t n) {
+  using std::sqrt;
+  T s(0);
+  for (std::size_t i = from; i < from + n && i < v.size(); ++i) s += v[i] * v[i];
+  return sqrt(s);
+}
+template <class T>
+bool is_nan_of(const T& x) { return ref::ScalarTraits<T>::is_nan(x); }
+template <class T>
+T pi_of() { return ref::ScalarTraits<T>::pi(); }
+/// std::max on Real, as the errors have always taken it (a NaN first operand wins); on Bounded
+/// the 1-Lipschitz max of the intervals, NaN where either is (the fast level leaves a NaN error
+/// to MPFR).
+template <class T>
+T larger(const T& a, const T& b) {
+  if constexpr (std::is_same_v<T, ref::Bounded>) {
+    if (is_nan_of(a) || is_nan_of(b)) return ref::ScalarTraits<T>::nan();
+    return ref::max(a, b);
+  } else {
+    return std::max(a, b);
+  }
+}
+
+/// METRIC-1 and METRIC-6 of a quaternion output against `want` (unit_rotation_error).
+template <class T>
+T rotation_error_of(const std::vector<T>& got, const ref::Quaternion<T>& want) {
+  return larger(clause::METRIC_1_rotation_distance(quat_of(got), want), clause::METRIC_6_norm_defect(quat_of(got)));
+}
+
+/// AXANG-1: (theta, u) compared as rotations, with a unit axis required.
+template <class T>
+T axis_angle_error(const Arrays<T>& got, const Arrays<T>& want) {
+  using std::abs, std::cos, std::sin;
+  const T h = got[0][0] / T(2);
+  const ref::Quaternion<T> g{cos(h), sin(h) * got[1][0], sin(h) * got[1][1], sin(h) * got[1][2]};
+  const T hw = want[0][0] / T(2);
+  const ref::Quaternion<T> w{cos(hw), sin(hw) * want[1][0], sin(hw) * want[1][1], sin(hw) * want[1][2]};
+  const T axis_defect = abs(norm_of(got[1], 0, 3) - T(1));
+  if (is_nan_of(axis_defect)) return axis_defect;
+  return larger(clause::METRIC_1_rotation_distance(g, w), axis_defect);
+}
+/// AXANG-1's identity: angle 0 or 2 pi.
+template <class T>
+bool identity_angle(const Arrays<T>& want) {
+  return want[0][0] == 0 || want[0][0] >= T(2) * pi_of<T>();
+}
+
+/// AXANG-3: the rotation angle rho(x) = 2 atan2(|sin(x/2)|, |cos(x/2)|) in [0, pi].
+template <class T>
+T rotation_angle(const T& x) {
+  using std::abs, std::atan2, std::cos, std::sin;
+  return T(2) * atan2(abs(sin(x / T(2))), abs(cos(x / T(2))));
+}
+
+/// | |u| - 1 | of an axis output.
+template <class T>
+T axis_defect(const std::vector<T>& u) {
+  using std::abs;
+  return abs(norm_of(u, 0, 3) - T(1));
+}
+
+/// SQRT-1 algebraic_root: the rotation of s/|s| against the reference and | |s|^2 / |q| - 1 |.
+template <class T>
+std::optional<T> algebraic_root_error(const std::vector<T>& q, const std::vector<T>& got, const std::vector<T>& want) {
+  using std::abs;
+  const T n = norm_of(got, 0, 4), nq = norm_of(q, 0, 4);
+  if (is_nan_of(n) || n == 0 || nq == 0) return std::nullopt;
+  const ref::Quaternion<T> s = quat_of(got);
+  const ref::Quaternion<T> u{s.w / n, s.x / n, s.y / n, s.z / n};
+  return larger(clause::METRIC_1_rotation_distance(u, quat_of(want)), T(abs(n * n / nq - T(1))));
+}
+
+/// SQRT-1 minus_one_axis: s'^2 against q^ = -1 with its sign, and s' unit.
+template <class T>
+T minus_one_root_error(const std::vector<T>& got) {
+  using std::abs;
+  const ref::Quaternion<T> s = quat_of(got);
+  // max_i |(s'^2)_i - (-1)_i|: s' = 1 squares to +1, the same rotation as -1 but no square root of it.
+  const ref::Quaternion<T> p = s * s;
+  const T e = larger(larger(larger(T(abs(p.w + T(1))), T(abs(p.x))), T(abs(p.y))), T(abs(p.z)));
+  if (is_nan_of(e)) return e;
+  return larger(e, clause::METRIC_6_norm_defect(s));
+}
+
+/// LOG-1/LOG-2: exp of both logs compared as rotations, and the excess beyond the principal range.
+template <class T>
+T log_error(const Arrays<T>& got, const Arrays<T>& want) {
+  const T n = norm_of(got[0], 0, 3);
+  if (is_nan_of(n)) return n;
+  const auto e = clause::EXP_1_exp(ref::Vec3<T>{got[0][0], got[0][1], got[0][2]});
+  const auto w = clause::EXP_1_exp(ref::Vec3<T>{want[0][0], want[0][1], want[0][2]});
+  const T excess = larger(T(0), T(n - pi_of<T>()));
+  return larger(clause::METRIC_1_rotation_distance(e.value, w.value), excess);
+}
+/// LOG-2: the spec's log of a negative real quaternion, pi (0, 0, +-1).
+template <class T>
+bool negative_real_log(const Arrays<T>& want) {
+  using std::abs;
+  return want[0][0] == 0 && want[0][1] == 0 && want[0][2] != 0 && abs(want[0][2]) >= pi_of<T>() - T(1e-30);
+}
+/// w <= 0: at w = 0 (a half turn) log q and log(-q) are equally short, a tie either side of which
+/// is the same rotation (the reference's |v| is pi/2 up to its own last bits there).
+template <class T>
+bool obtuse_log(const Arrays<T>& want) {
+  return norm_of(want[0], 0, 3) >= pi_of<T>() / T(2) - T(1e-60);
+}
+
+/// DQ-8: METRIC-7 of DQ-9(xi') against sigma, and the excess beyond the principal range.
+template <class T>
+T dq_log_error(const std::vector<T>& sigma_in, const Arrays<T>& got) {
+  const ref::Vec3<T> r{got[0][0], got[0][1], got[0][2]}, d{got[0][3], got[0][4], got[0][5]};
+  const auto e = clause::DQ_9_exp(ref::DualVector<T>{r, d});
+  if (e.status != ref::Status::ok) return ref::ScalarTraits<T>::nan();
+  const ref::DualQuaternion<T> sigma{quat_of(sigma_in, 0), quat_of(sigma_in, 1)};
+  const auto m = clause::METRIC_7_rigid_error(e.value, sigma);
+  const T excess = larger(T(0), T(norm_of(got[0], 0, 3) - pi_of<T>()));
+  return larger(larger(m.rotation, m.translation), excess);
+}
+
+/// The case's inputs as exact Bounded values (values of the format).
+Arrays<ref::Bounded> bounded_inputs_of(const Case& c) {
+  Arrays<ref::Bounded> in(c.inputs.size());
+  for (std::size_t a = 0; a < c.inputs.size(); ++a)
+    for (const Real& x : c.inputs[a]) in[a].push_back(ref::Bounded(x.toLDouble(), 0));
+  return in;
+}
+
 /// The tie band of ACC-1 (hemisphere_tie): |a.b| within 8 eps of 0, where the rounding of a
 /// dot product in the format (4 products, 3 sums) can give either sign.
 bool near_tie(const Real& d, ref::Format f) { return abs(d) <= Real(8) * ref::format_epsilon<Real>(f); }
@@ -197,54 +338,69 @@ std::vector<AcceptableConvention> build_conventions() {
   std::vector<AcceptableConvention> all;
   const auto is = [](const char* name) { return [name](const AbiOp& op) { return op.name == name; }; };
 
+  // The fast forms below evaluate the same templates on ref::Bounded (see AcceptableConvention).
+  using BoundedArrays = AcceptableConvention::BoundedArrays;
+
   // MAT-2: q and -q are one rotation; the canonical sign (w > 0) is the spec's choice.
   all.push_back({"sign", "from_matrix returns -q of the canonical q (w > 0): the same rotation", false, is("from_matrix"),
                  [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   return unit_rotation_error(got[0], quat(want[0]));
+                   return rotation_error_of(got[0], quat_of(want[0]));
                  }});
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    return rotation_error_of(got[0], quat_of(want[0]));
+  };
 
   // AXANG-1: (theta, u) and (2 pi - theta, -u), or (theta - 2 pi, u), describe one rotation; the
-  // identity has every unit axis. Compared as rotations, with a unit axis required.
-  auto axis_angle_error = [](const Values& got, const Values& want) -> Real {
-    const Real h = got[0][0] / Real(2);
-    const Quat g{cos(h), sin(h) * got[1][0], sin(h) * got[1][1], sin(h) * got[1][2]};
-    const Real hw = want[0][0] / Real(2);
-    const Quat w{cos(hw), sin(hw) * want[1][0], sin(hw) * want[1][1], sin(hw) * want[1][2]};
-    const Real axis_defect = abs(block_norm(got[1], 0, 3) - Real(1));
-    if (mpfr::isnan(axis_defect)) return axis_defect;
-    return std::max(clause::METRIC_1_rotation_distance(g, w), axis_defect);
-  };
-  const auto identity = [](const Values& want) { return want[0][0] == 0 || want[0][0] >= Real(2) * ref::ScalarTraits<Real>::pi(); };
+  // identity has every unit axis. Compared as rotations, with a unit axis required
+  // (axis_angle_error).
   all.push_back({"identity_axis", "to_axis_angle of the identity rotation (angle 0 or 2 pi) returns another unit axis",
                  false, is("to_axis_angle"),
-                 [identity](const AbiOp&, const Case&, const Values& want, ref::Format) { return identity(want); },
-                 [axis_angle_error, identity](const AbiOp&, const Case&, const Values& got, const Values& want,
-                                              ref::Format) -> std::optional<Real> {
-                   if (!identity(want)) return std::nullopt;
+                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return identity_angle(want); },
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   if (!identity_angle(want)) return std::nullopt;
                    return axis_angle_error(got, want);
                  }});
+  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
+    return identity_angle(want);
+  };
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    if (!identity_angle(want)) return std::nullopt;
+    return axis_angle_error(got, want);
+  };
   all.push_back({"angle_range", "to_axis_angle returns the angle in another range ([0, pi] with the axis flipped, or signed)",
                  false, is("to_axis_angle"),
-                 [identity](const AbiOp&, const Case&, const Values& want, ref::Format) { return !identity(want); },
-                 [axis_angle_error, identity](const AbiOp&, const Case&, const Values& got, const Values& want,
-                                              ref::Format) -> std::optional<Real> {
-                   if (identity(want)) return std::nullopt;
+                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return !identity_angle(want); },
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   if (identity_angle(want)) return std::nullopt;
                    return axis_angle_error(got, want);
                  }});
+  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
+    return !identity_angle(want);
+  };
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    if (identity_angle(want)) return std::nullopt;
+    return axis_angle_error(got, want);
+  };
 
   // AXANG-3: an angle alone is another correct answer where it is the angle of the same rotation
   // about some unit axis: 2 pi - theta (the angle in [0, pi], about -u), or a signed angle.
-  // Compared by the rotation angle rho(x) = 2 atan2(|sin(x/2)|, |cos(x/2)|) in [0, pi].
-  const auto rotation_angle = [](const Real& x) { return Real(2) * atan2(abs(sin(x / Real(2))), abs(cos(x / Real(2)))); };
+  // Compared by the rotation angle rho(x) in [0, pi] (rotation_angle).
   all.push_back({"angle_range", "to_angle returns the angle in another range ([0, pi], the angle about -u, or signed)",
                  false, is("to_angle"),
                  [](const AbiOp&, const Case&, ref::Format) { return true; },
-                 [rotation_angle](const AbiOp&, const Case&, const Values& got, const Values& want,
-                                  ref::Format) -> std::optional<Real> {
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
                    if (mpfr::isnan(got[0][0])) return got[0][0];
                    return abs(rotation_angle(got[0][0]) - rotation_angle(want[0][0]));
                  }});
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    if (is_nan_of(got[0][0])) return got[0][0];
+    return abs(rotation_angle(got[0][0]) - rotation_angle(want[0][0]));
+  };
   // AXANG-4: the axis of AXANG-1 alone. Where theta > pi (w < 0) a library whose angles lie in
   // [0, pi] (Eigen's AngleAxis, nalgebra) returns -u, the axis of the same rotation by 2 pi - theta:
   // the axis of its angle_range. The identity has every unit axis (identity_axis).
@@ -252,36 +408,56 @@ std::vector<AcceptableConvention> build_conventions() {
     return !c.inputs.empty() && c.inputs[0].size() >= 4 && c.inputs[0][0] == 0 && c.inputs[0][1] == 0 &&
            c.inputs[0][2] == 0;
   };
-  const auto axis_defect = [](const std::vector<Real>& u) { return abs(block_norm(u, 0, 3) - Real(1)); };
   all.push_back({"identity_axis", "to_axis of the identity rotation (angle 0 or 2 pi) returns another unit axis", false,
                  is("to_axis"),
                  [pure_real_input](const AbiOp&, const Case& c, ref::Format) { return pure_real_input(c); },
-                 [pure_real_input, axis_defect](const AbiOp&, const Case& c, const Values& got, const Values&,
-                                                ref::Format) -> std::optional<Real> {
+                 [pure_real_input](const AbiOp&, const Case& c, const Values& got, const Values&,
+                                   ref::Format) -> std::optional<Real> {
                    if (!pure_real_input(c)) return std::nullopt;
                    return axis_defect(got[0]);
                  }});
+  all.back().fast_error = [pure_real_input](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
+                                            ref::Format) -> std::optional<ref::Bounded> {
+    if (!pure_real_input(c)) return std::nullopt;
+    return axis_defect(got[0]);
+  };
   const auto obtuse_input = [pure_real_input](const Case& c) {
     return !pure_real_input(c) && !c.inputs.empty() && c.inputs[0].size() >= 4 && c.inputs[0][3] <= 0;
+  };
+  // |got + want| (the axis -u against u), and a unit axis.
+  const auto flipped_axis_error = [](const auto& got, const auto& want) {
+    using T = std::decay_t<decltype(got[0][0])>;
+    using std::sqrt;
+    T d(0);
+    for (int i = 0; i < 3; ++i) d += (got[0][i] + want[0][i]) * (got[0][i] + want[0][i]);
+    return larger(T(sqrt(d)), axis_defect(got[0]));
   };
   all.push_back({"angle_range", "to_axis returns -u where theta >= pi: the axis of the same rotation by 2 pi - theta in [0, pi]",
                  false, is("to_axis"),
                  [obtuse_input](const AbiOp&, const Case& c, ref::Format) { return obtuse_input(c); },
-                 [obtuse_input, axis_defect](const AbiOp&, const Case& c, const Values& got, const Values& want,
-                                             ref::Format) -> std::optional<Real> {
+                 [obtuse_input, flipped_axis_error](const AbiOp&, const Case& c, const Values& got, const Values& want,
+                                                    ref::Format) -> std::optional<Real> {
                    if (!obtuse_input(c)) return std::nullopt;
-                   Real d(0);
-                   for (int i = 0; i < 3; ++i) d += (got[0][i] + want[0][i]) * (got[0][i] + want[0][i]);
-                   return std::max(Real(sqrt(d)), axis_defect(got[0]));
+                   return flipped_axis_error(got, want);
                  }});
+  all.back().fast_error = [obtuse_input, flipped_axis_error](const AbiOp&, const Case& c, const BoundedArrays& got,
+                                                             const BoundedArrays& want,
+                                                             ref::Format) -> std::optional<ref::Bounded> {
+    if (!obtuse_input(c)) return std::nullopt;
+    return flipped_axis_error(got, want);
+  };
 
   // SQRT-1: -s is the other square root of q^ and the same rotation (as MAT-2's -q); q^ = -1 has
   // every unit pure quaternion as a square root (+z is the spec's choice, as LOG-2's).
   all.push_back({"sign", "sqrt returns -s of the canonical s (w > 0): the other square root, the same rotation", false,
                  is("sqrt"), [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   return unit_rotation_error(got[0], quat(want[0]));
+                   return rotation_error_of(got[0], quat_of(want[0]));
                  }});
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    return rotation_error_of(got[0], quat_of(want[0]));
+  };
   // SQRT-1 on a non-unit q (EDGE-5): the algebra's square root s with s^2 = q has |s| = sqrt|q|
   // (numpy-quaternion's np.sqrt, GLM's and PyGLM's sqrt, kingdon's sqrt()): the rotation root
   // scaled, a correct answer of the algebra. Measured as the rotation of s/|s| against the
@@ -289,26 +465,31 @@ std::vector<AcceptableConvention> build_conventions() {
   all.push_back({"algebraic_root", "sqrt of a non-unit q returns the algebra's root s (s^2 = q, |s| = sqrt|q|)", false,
                  is("sqrt"), [](const AbiOp&, const Case&, ref::Format) { return true; },
                  [](const AbiOp&, const Case& c, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   const Real n = block_norm(got[0], 0, 4), nq = block_norm(c.inputs[0], 0, 4);
-                   if (mpfr::isnan(n) || n == 0 || nq == 0) return std::nullopt;
-                   const Quat s = quat(got[0]);
-                   const Quat u{s.w / n, s.x / n, s.y / n, s.z / n};
-                   return std::max(clause::METRIC_1_rotation_distance(u, quat(want[0])), Real(abs(n * n / nq - Real(1))));
+                   return algebraic_root_error(c.inputs[0], got[0], want[0]);
                  }});
+  all.back().fast_error = [](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    return algebraic_root_error(bounded_inputs_of(c)[0], got[0], want[0]);
+  };
   // SQRT-1 where w < 0: q^ and -q^ are one rotation; a library of rotations (not of quaternions:
   // SciPy's Rotation ** 0.5, nalgebra's powf(0.5)) returns the rotation's principal root, the
   // root of -q^, half of its angle in [0, pi] (for -1, the identity). Measured as `sign`.
   all.push_back({"principal_root", "sqrt returns the root of -q^ where w < 0: the rotation's principal square root (half its angle in [0, pi])",
                  false, is("sqrt"),
                  [](const AbiOp&, const Case& c, ref::Format) { return c.inputs[0][3] < 0; },
-                 [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
+                 [](const AbiOp&, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
                    if (!(c.inputs[0][3] < 0)) return std::nullopt;
-                   std::vector<Real> minus = c.inputs[0];
-                   for (Real& x : minus) x = -x;
-                   const ReferenceResult root = op.reference({minus}, 0);
+                   const auto root = clause::SQRT_1_sqrt(-quat_of(c.inputs[0]));
                    if (root.status != ref::Status::ok) return std::nullopt;
-                   return unit_rotation_error(got[0], quat(root.outputs[0]));
+                   return rotation_error_of(got[0], root.value);
                  }});
+  all.back().fast_error = [](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    if (!(c.inputs[0][3] < 0)) return std::nullopt;
+    const auto root = clause::SQRT_1_sqrt(-quat_of(bounded_inputs_of(c)[0]));
+    if (root.status != ref::Status::ok) return std::nullopt;
+    return rotation_error_of(got[0], root.value);
+  };
   const auto minus_one_input = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
   all.push_back({"minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", false,
                  is("sqrt"),
@@ -316,85 +497,90 @@ std::vector<AcceptableConvention> build_conventions() {
                  [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values&,
                                    ref::Format) -> std::optional<Real> {
                    if (!minus_one_input(c)) return std::nullopt;
-                   const Quat s = quat(got[0]);
-                   // s'^2 against q^ = -1 with its sign (max_i |(s'^2)_i - (-1)_i|: s' = 1 squares to
-                   // +1, the same rotation as -1 but no square root of it), and s' unit (METRIC-6).
-                   const Quat p = s * s;
-                   const Real e = std::max({Real(abs(p.w + Real(1))), Real(abs(p.x)), Real(abs(p.y)), Real(abs(p.z))});
-                   if (mpfr::isnan(e)) return e;
-                   return std::max(e, clause::METRIC_6_norm_defect(s));
+                   return minus_one_root_error(got[0]);
                  }});
+  all.back().fast_error = [minus_one_input](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
+                                            ref::Format) -> std::optional<ref::Bounded> {
+    if (!minus_one_input(c)) return std::nullopt;
+    return minus_one_root_error(got[0]);
+  };
 
   // LOG-1/LOG-2: every v with exp(v) = +-q and |v| <= pi is a logarithm of the rotation; the
-  // principal branch (and +z for a negative real q) is the spec's choice.
-  auto log_error = [](const Values& got, const Values& want) -> Real {
-    const Real n = block_norm(got[0], 0, 3);
-    if (mpfr::isnan(n)) return n;
-    const auto e = clause::EXP_1_exp(V3{got[0][0], got[0][1], got[0][2]});
-    const auto w = clause::EXP_1_exp(V3{want[0][0], want[0][1], want[0][2]});
-    const Real excess = std::max(Real(0), n - ref::ScalarTraits<Real>::pi());  // beyond the principal range
-    return std::max(clause::METRIC_1_rotation_distance(e.value, w.value), excess);
-  };
-  const auto negative_real = [](const Values& want) {
-    return want[0][0] == 0 && want[0][1] == 0 && want[0][2] != 0 && abs(want[0][2]) >= ref::ScalarTraits<Real>::pi() - Real(1e-30);
-  };
-  // w <= 0: at w = 0 (a half turn) log q and log(-q) are equally short, a tie either side of which
-  // is the same rotation (the reference's |v| is pi/2 up to its own last bits there).
-  const auto obtuse = [](const Values& want) {
-    return block_norm(want[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2) - Real(1e-60);
-  };
+  // principal branch (and +z for a negative real q) is the spec's choice (log_error).
   all.push_back({"minus_one_axis", "log of a negative real quaternion returns pi times another unit axis", false, is("log"),
-                 [negative_real](const AbiOp&, const Case&, const Values& want, ref::Format) { return negative_real(want); },
-                 [log_error, negative_real](const AbiOp&, const Case&, const Values& got, const Values& want,
-                                            ref::Format) -> std::optional<Real> {
+                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return negative_real_log(want); },
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
                    // pi u' only: a log near 0 is the log of -q, shorter_arc's case.
-                   if (!negative_real(want) || block_norm(got[0], 0, 3) < ref::ScalarTraits<Real>::pi() / Real(2))
-                     return std::nullopt;
+                   if (!negative_real_log(want) || norm_of(got[0], 0, 3) < pi_of<Real>() / Real(2)) return std::nullopt;
                    return log_error(got, want);
                  }});
+  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
+    return negative_real_log(want);
+  };
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    using B = ref::Bounded;
+    if (!negative_real_log(want) || norm_of(got[0], 0, 3) < pi_of<B>() / B(2)) return std::nullopt;
+    return log_error(got, want);
+  };
   // A negative real q included: its log of -q is 0 (log(-1) = 0, the identity's log).
   all.push_back({"shorter_arc", "log returns the logarithm of -q (|v| <= pi/2) where w <= 0: the same rotation", false, is("log"),
-                 [obtuse](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse(want); },
-                 [log_error, obtuse, negative_real](const AbiOp&, const Case&, const Values& got, const Values& want,
-                                                    ref::Format) -> std::optional<Real> {
-                   if (!obtuse(want)) return std::nullopt;
-                   if (negative_real(want) && block_norm(got[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2))
+                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse_log(want); },
+                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
+                   if (!obtuse_log(want)) return std::nullopt;
+                   if (negative_real_log(want) && norm_of(got[0], 0, 3) >= pi_of<Real>() / Real(2))
                      return std::nullopt;  // pi u': minus_one_axis
                    return log_error(got, want);
                  }});
+  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
+    return obtuse_log(want);
+  };
+  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
+                             ref::Format) -> std::optional<ref::Bounded> {
+    using B = ref::Bounded;
+    if (!obtuse_log(want)) return std::nullopt;
+    if (negative_real_log(want) && norm_of(got[0], 0, 3) >= pi_of<B>() / B(2)) return std::nullopt;
+    return log_error(got, want);
+  };
 
   // DQ-8: every xi' with DQ-9(xi') = +-sigma and |xi'_r| <= pi is a logarithm of the rigid motion;
   // at r = -1 (minus_one_axis) the axis is free up to exp(xi') = sigma, and where r_w <= 0 the log
-  // of -sigma (shorter_arc) is the same motion. Measured as METRIC-7 of DQ-9(xi') against sigma.
-  const auto dq_log_error = [](const Case& c, const Values& got) -> Real {
-    const V3 r{got[0][0], got[0][1], got[0][2]}, d{got[0][3], got[0][4], got[0][5]};
-    const auto e = clause::DQ_9_exp(ref::DualVector<Real>{r, d});
-    if (e.status != ref::Status::ok) return ref::ScalarTraits<Real>::nan();
-    const std::vector<Real>& in = c.inputs[0];
-    const ref::DualQuaternion<Real> sigma{quat(in, 0), quat(in, 1)};
-    const auto m = clause::METRIC_7_rigid_error(e.value, sigma);
-    const Real excess = std::max(Real(0), block_norm(got[0], 0, 3) - ref::ScalarTraits<Real>::pi());
-    return std::max({m.rotation, m.translation, excess});
-  };
+  // of -sigma (shorter_arc) is the same motion. Measured as METRIC-7 of DQ-9(xi') against sigma
+  // (dq_log_error).
   all.push_back({"minus_one_axis", "dq_log of a dual quaternion whose real part is a negative real returns another log of it (|xi_r| = pi)",
                  false, is("dq_log"),
                  [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); },
-                 [minus_one_input, dq_log_error](const AbiOp&, const Case& c, const Values& got, const Values&,
-                                                    ref::Format) -> std::optional<Real> {
-                   if (!minus_one_input(c) || block_norm(got[0], 0, 3) < ref::ScalarTraits<Real>::pi() / Real(2))
-                     return std::nullopt;
-                   return dq_log_error(c, got);
+                 [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values&,
+                                   ref::Format) -> std::optional<Real> {
+                   if (!minus_one_input(c) || norm_of(got[0], 0, 3) < pi_of<Real>() / Real(2)) return std::nullopt;
+                   return dq_log_error(c.inputs[0], got);
                  }});
+  all.back().fast_error = [minus_one_input](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
+                                            ref::Format) -> std::optional<ref::Bounded> {
+    using B = ref::Bounded;
+    if (!minus_one_input(c) || norm_of(got[0], 0, 3) < pi_of<B>() / B(2)) return std::nullopt;
+    return dq_log_error(bounded_inputs_of(c)[0], got);
+  };
   all.push_back({"shorter_arc", "dq_log returns the logarithm of -sigma (|xi_r| <= pi/2) where r_w <= 0: the same rigid motion",
                  false, is("dq_log"),
-                 [obtuse](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse(want); },
-                 [obtuse, minus_one_input, dq_log_error](const AbiOp&, const Case& c, const Values& got,
-                                                                      const Values& want, ref::Format) -> std::optional<Real> {
-                   if (!obtuse(want)) return std::nullopt;
-                   if (minus_one_input(c) && block_norm(got[0], 0, 3) >= ref::ScalarTraits<Real>::pi() / Real(2))
+                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse_log(want); },
+                 [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values& want,
+                                   ref::Format) -> std::optional<Real> {
+                   if (!obtuse_log(want)) return std::nullopt;
+                   if (minus_one_input(c) && norm_of(got[0], 0, 3) >= pi_of<Real>() / Real(2))
                      return std::nullopt;  // pi u': minus_one_axis
-                   return dq_log_error(c, got);
+                   return dq_log_error(c.inputs[0], got);
                  }});
+  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
+    return obtuse_log(want);
+  };
+  all.back().fast_error = [minus_one_input](const AbiOp&, const Case& c, const BoundedArrays& got,
+                                            const BoundedArrays& want, ref::Format) -> std::optional<ref::Bounded> {
+    using B = ref::Bounded;
+    if (!obtuse_log(want)) return std::nullopt;
+    if (minus_one_input(c) && norm_of(got[0], 0, 3) >= pi_of<B>() / B(2)) return std::nullopt;
+    return dq_log_error(bounded_inputs_of(c)[0], got);
+  };
 
   // EDGE-3: at a hemisphere tie (|a.b| within rounding of 0) both arcs have the same length; the
   // spec breaks the tie one way ("flip iff a.b < 0 strictly"), a library may break it the other.

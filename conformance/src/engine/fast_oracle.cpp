@@ -336,8 +336,9 @@ bool exact_values(const std::vector<Real>& xs, BoundedArray& out) {
   return true;
 }
 
-/// TOL-1's verdicts at the two ends of the interval e +- bound of an error (in absolute terms).
-FastVerdicts verdicts_of_error(const FastCase& fc, const Bounded& e) {
+}  // namespace
+
+FastVerdicts fast_verdicts_of_error(const FastCase& fc, const Bounded& e) {
   // The exact error lies in [e - bound, e + bound]; MPFR's err (that error over eps, rounded to
   // double) lies between the roundings of the two ends, and TOL_1_verdict is monotone.
   const long double spread = e.bound() * (1 + 4 * Bounded::kU);
@@ -348,8 +349,6 @@ FastVerdicts verdicts_of_error(const FastCase& fc, const Bounded& e) {
   return FastVerdicts{ref::clause::TOL_1_verdict(std::max(lo_down, 0.0), fc.bars),
                       ref::clause::TOL_1_verdict(hi_up, fc.bars)};
 }
-
-}  // namespace
 
 std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& obs,
                                           const FastReference& want) {
@@ -363,12 +362,11 @@ std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, c
   const ref::BoundedScope scope;
   const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
   if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
-  return verdicts_of_error(fc, e);
+  return fast_verdicts_of_error(fc, e);
 }
 
-std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const FastCase& fc, const FastReference& r,
-                                                      ref::Format f, const FastReference& want) {
-  if (r.status != ref::Status::ok || want.status != ref::Status::ok) return std::nullopt;
+std::optional<BoundedValues> rounded_intervals(const FastReference& r, ref::Format f) {
+  if (r.status != ref::Status::ok) return std::nullopt;
   constexpr long double u = Bounded::kU;
   BoundedValues got(r.outputs.size());
   for (std::size_t a = 0; a < r.outputs.size(); ++a)
@@ -384,10 +382,18 @@ std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const Fas
       const long double mid = rlo / 2 + rhi / 2, half = (rhi - rlo) / 2;
       got[a].push_back(Bounded(mid, half * (1 + 2 * u) + std::fabs(mid) * 2 * u + Bounded::kTiny));
     }
+  return got;
+}
+
+std::optional<FastVerdicts> fast_verdicts_of_rounding(const AbiOp& op, const FastCase& fc, const FastReference& r,
+                                                      ref::Format f, const FastReference& want) {
+  if (want.status != ref::Status::ok) return std::nullopt;
+  const std::optional<BoundedValues> got = rounded_intervals(r, f);
+  if (!got) return std::nullopt;
   const ref::BoundedScope scope;
-  const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
+  const Bounded e = output_error_bounded(op, *got, want.outputs, fc.scale, fc.tiny);
   if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
-  return verdicts_of_error(fc, e);
+  return fast_verdicts_of_error(fc, e);
 }
 
 std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const Case& c, const Observed& log_got,
@@ -402,7 +408,7 @@ std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const C
   Bounded e = clause::METRIC_1_rotation_distance(quat(got), quat(q));
   if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;
   if (g_mutation == FastOracleMutation::wrong_term) e = Bounded(e.value() / 2, e.bound() / 2);  // a lost factor 2
-  return verdicts_of_error(fc, e);
+  return fast_verdicts_of_error(fc, e);
 }
 
 bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f) {
@@ -415,15 +421,28 @@ bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f) {
 }
 
 std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp& op, const Case& c,
-                                                                     const BoundedValues& in, ref::Format f) {
+                                                                     const BoundedValues& in,
+                                                                     const FastReference& want, ref::Format f) {
   std::vector<AcceptableAnswer> answers;
   for (const AcceptableConvention& a : acceptable_conventions()) {
     if (a.outside_domain || a.declared_only || !a.applies(op)) continue;
-    const std::optional<bool> relevant = a.relevant.of_input(op, c, f);
+    std::optional<bool> relevant = a.relevant.of_input(op, c, f);
+    if (!relevant && a.fast_relevant && want.status == ref::Status::ok) {  // read from the spec's answer
+      const ref::BoundedScope scope;
+      const bool r = a.fast_relevant(op, c, want.outputs, f);
+      if (scope.decided()) relevant = r;
+    }
     if (relevant && !*relevant) continue;
     // endpoint_sign's error is defined only under SLERP-3's signed measure.
     if (a.id == "endpoint_sign" && relevant && op.outputs.at(0).measure != Measure::signed_unit_rotation) continue;
-    if (a.id != "hemisphere_tie" || !relevant) return std::nullopt;  // no fast form: MPFR's to judge
+    if (!relevant) return std::nullopt;  // relevance undecided: MPFR's to judge
+    if (a.id != "hemisphere_tie") {
+      if (!a.fast_error) return std::nullopt;  // no fast form: MPFR's to judge
+      answers.push_back({a.id, std::nullopt, [&a, &op, &c, &want, f](const BoundedValues& got) {
+                           return a.fast_error(op, c, got, want.outputs, f);
+                         }});
+      continue;
+    }
     if (op.name == "slerp" || op.name == "nlerp") {
       // As the convention's error: the interpolation of the normalised inputs with the spec's flip
       // (decided on the exact inputs) reversed, measured as METRIC-1 and METRIC-6.
@@ -432,7 +451,7 @@ std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp
       const BQuat other =
           hemisphere_tie_other_branch(op.name == "slerp", quat(in[0]), quat(in[1]), in[2][0], hemisphere_rule_flips_b(c));
       if (!scope.decided()) return std::nullopt;
-      answers.push_back({a.id, {ref::Status::ok, {flat(other)}}});
+      answers.push_back({a.id, FastReference{ref::Status::ok, {flat(other)}}, {}});
       continue;
     }
     const std::optional<Values> flipped = hemisphere_tie_flipped_inputs(op, c, f);
@@ -440,7 +459,7 @@ std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp
     std::optional<FastReference> r = fast_reference(op, bounded_values(*flipped), c.k);
     if (!r) return std::nullopt;
     if (r->status != ref::Status::ok) continue;  // (undefined too)
-    answers.push_back({a.id, std::move(*r)});
+    answers.push_back({a.id, std::move(*r), {}});
   }
   return answers;
 }

@@ -24,6 +24,7 @@
 #include <rotorcert/engine/abi_op.hpp>
 #include <rotorcert/engine/cases.hpp>
 #include <rotorcert/impl_abi.h>
+#include <rotorcert/reference/bounded.hpp>
 #include <rotorcert/reference/metrics.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
 
@@ -108,6 +109,15 @@ struct AcceptableConvention {
   /// Judged where the spec answers DOMAIN_ERROR (EDGE-6's zero input) and the output is OK: an
   /// answer the spec does not give, but a correct library may (a sentinel, the algebra's value).
   bool outside_domain = false;
+  /// The fast oracle's form of `relevant` (where it reads the spec's answer) and of `error`, where
+  /// the convention has one: the same formulas on ref::Bounded values (the answer and the output
+  /// as intervals); a decision their bounds do not settle is undecided (ref::BoundedScope). Unset:
+  /// MPFR judges the convention. A relevance read from the input alone needs no fast form.
+  using BoundedArrays = std::vector<std::vector<ref::Bounded>>;
+  std::function<bool(const AbiOp& op, const Case& c, const BoundedArrays& want, ref::Format f)> fast_relevant{};
+  std::function<std::optional<ref::Bounded>(const AbiOp& op, const Case& c, const BoundedArrays& got,
+                                            const BoundedArrays& want, ref::Format f)>
+      fast_error{};
 };
 const std::vector<AcceptableConvention>& acceptable_conventions();
 

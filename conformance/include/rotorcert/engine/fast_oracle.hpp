@@ -9,6 +9,7 @@
 // (ROTORCERT_FUZZ_ORACLE=both) and stop on any difference.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -100,20 +101,33 @@ std::optional<FastVerdicts> fast_round_trip_verdicts(const FastCase& fc, const C
 /// answer counts always.
 bool may_be_acceptable(const AbiOp& op, const Case& c, ref::Format f);
 
-/// The answers besides the spec's that the acceptable conventions (ACC-1) relevant to case `c`
-/// accept, in Bounded arithmetic on `in` (c's inputs as exact Bounded values), in the order in
-/// which judge_case_against consults the conventions; a convention whose error is undefined on c
-/// gives none. An observation's error against such an answer (fast_verdicts_of_rounding with the
-/// answer as `want`) is that convention's error. Today hemisphere_tie has a fast form (the other
-/// branch of a tie: slerp and nlerp with the flip forced the other way, a blend or ScLERP on the
-/// exactly tied influences negated); nullopt where a relevant convention has none, or where an
-/// answer is undecided.
+/// `r` rounded to the format, each component as the interval between the roundings of its two ends
+/// (rounding is monotone): an interval that holds every way r may round. nullopt where r is not OK
+/// or a rounding is not finite.
+std::optional<BoundedValues> rounded_intervals(const FastReference& r, ref::Format f);
+
+/// TOL-1's verdicts at the two ends of an interval that holds an exact error (in absolute terms).
+FastVerdicts fast_verdicts_of_error(const FastCase& fc, const ref::Bounded& e);
+
+/// The acceptable conventions (ACC-1) relevant to case `c` of `op`, in the order in which
+/// judge_case_against consults them, each with its fast form:
+///   - `answer`: hemisphere_tie's other branch of a tie (slerp and nlerp with the flip forced the
+///     other way, a blend or ScLERP on the exactly tied influences negated), in Bounded arithmetic
+///     on `in` (c's inputs as exact Bounded values); an observation's error against it
+///     (fast_verdicts_of_rounding with the answer as `want`) is the convention's error;
+///   - else `error`: the convention's own error of an output (AcceptableConvention::fast_error,
+///     against the spec's answer `want`), nullopt where the convention says nothing about it; an
+///     undecided bound shows in ref::BoundedScope. Valid while op, c and want are.
+/// A convention whose error is undefined on c gives none. nullopt where a relevant convention has
+/// no fast form, or where a relevance or an answer is undecided.
 struct AcceptableAnswer {
   std::string convention;  // the AcceptableConvention's id
-  FastReference answer;
+  std::optional<FastReference> answer;
+  std::function<std::optional<ref::Bounded>(const BoundedValues& got)> error;
 };
 std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp& op, const Case& c,
-                                                                     const BoundedValues& in, ref::Format f);
+                                                                     const BoundedValues& in,
+                                                                     const FastReference& want, ref::Format f);
 
 /// For the agreement test only: a deliberately broken fast level, which the test must catch.
 enum class FastOracleMutation { none, bound_too_small, wrong_term };
