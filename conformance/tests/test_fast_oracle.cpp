@@ -213,14 +213,15 @@ TEST(FastOracle, AWrongRoundTripDistanceIsCaught) {
   EXPECT_GT(wrong, 0u);
 }
 
-/// ACC-1's conventions at the fast level (engine::fast_acceptable_answers): on the suite's cases
-/// where a hemisphere tie is at stake, an observation's verdicts against each fast answer are the
-/// convention's own (its MPFR error, `AcceptableConvention::error`): surely PASS where it PASSes,
-/// surely not PASS where it does not. Observations: the answer rounded, then 3, 40 and 2000 eps off.
-std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& first) {
-  std::size_t wrong = 0;
+/// Every fast acceptable answer (engine::fast_acceptable_answers) on the suite's cases
+/// (`cases_per_family` per family) of the ops with a fast reference, where `take(op, c, f)` holds
+/// and the reference is OK, formed as the fuzz oracle forms it: against the fast reference, or
+/// MPFR's where that is undecided. visit(op, tc, c, f, want, answer, convention, where), with the
+/// answer's AcceptableConvention (nullptr if none has its id).
+template <class Take, class Visit>
+void for_each_acceptable_answer(int cases_per_family, Take take, Visit visit) {
   engine::CaseOptions options;
-  options.cases_per_family = 32;
+  options.cases_per_family = cases_per_family;
   for (const spec::Clause& clause : the_spec().clauses) {
     if (clause.level == "Meta") continue;
     for (const ref::Format f : {ref::Format::binary32, ref::Format::binary64}) {
@@ -231,55 +232,69 @@ std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& f
         const spec::ToleranceClass& tc =
             the_spec().lookup(check.tolerance.empty() ? engine::tolerance_for(the_spec(), check.clause, check.op)
                                                       : check.tolerance);
-        const Real eps = ref::format_epsilon<Real>(f);
         for (const engine::Case& c : check.cases) {
-          if (!engine::hemisphere_tie_at_stake(op, c, f)) continue;
+          if (!take(op, c, f)) continue;
           const engine::ReferenceResult want = op.reference(c.inputs, c.k);
-          const auto fc = engine::fast_case(op, tc, c, f);
-          // As the fuzz oracle forms it: the fast reference, or MPFR's where that is undecided.
+          if (want.status != ref::Status::ok) continue;
           const auto fast_want = engine::fast_reference(op, c.inputs, c.k).value_or(engine::fast_reference_from(op, want));
-          if (want.status != ref::Status::ok || !fc) continue;
           const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), fast_want, f);
           if (!answers) continue;
           for (const engine::AcceptableAnswer& a : *answers) {
-            if (!a.answer) continue;  // a convention's own error: convention_error_violations
             const engine::AcceptableConvention* convention = nullptr;
             for (const engine::AcceptableConvention& x : engine::acceptable_conventions())
               if (x.id == a.convention && x.applies(op)) convention = &x;
-            const std::string where = clause.id + " " + check.op + " [" + c.label + "] " + engine::describe_inputs(op, c, f);
-            if (convention == nullptr) {
-              ++wrong;
-              if (first.empty()) first = "an answer of no convention " + a.convention + ": " + where;
-              continue;
-            }
-            for (const int k : {0, 3, 40, 2000}) {
-              engine::Observed o;
-              o.status = RC_OK;
-              o.outputs = engine::fast_values(*a.answer);
-              for (auto& arr : o.outputs)
-                for (Real& x : arr) x = engine::round_to(f, x);
-              Real& x = o.outputs[0][0];
-              x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
-              const auto fv = engine::fast_verdicts(op, *fc, o, *a.answer);
-              if (!fv) continue;
-              ++decided;
-              const std::optional<Real> error = convention->error(op, c, o.outputs, want.outputs, f);
-              const ref::Verdict v =
-                  error ? ref::clause::TOL_1_verdict((*error / eps).toDouble(), fc->bars) : ref::Verdict::fail;
-              if ((fv->worst == ref::Verdict::pass && v != ref::Verdict::pass) ||
-                  (fv->best != ref::Verdict::pass && v == ref::Verdict::pass)) {
-                ++wrong;
-                if (first.empty())
-                  first = a.convention + ": fast " + std::to_string(static_cast<int>(fv->best)) + ".." +
-                          std::to_string(static_cast<int>(fv->worst)) + ", MPFR " + std::to_string(static_cast<int>(v)) +
-                          " at " + std::to_string(k) + " eps off: " + where;
-              }
-            }
+            const std::string where = a.convention + " " + clause.id + " " + check.op + " [" + c.label + "] " +
+                                      engine::describe_inputs(op, c, f);
+            visit(op, tc, c, f, want, a, convention, where);
           }
         }
       }
     }
   }
+}
+
+/// ACC-1's conventions at the fast level (engine::fast_acceptable_answers): on the suite's cases
+/// where a hemisphere tie is at stake, an observation's verdicts against each fast answer are the
+/// convention's own (its MPFR error, `AcceptableConvention::error`): surely PASS where it PASSes,
+/// surely not PASS where it does not. Observations: the answer rounded, then 3, 40 and 2000 eps off.
+std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& first) {
+  std::size_t wrong = 0;
+  for_each_acceptable_answer(
+      32, [](const engine::AbiOp& op, const engine::Case& c, ref::Format f) { return engine::hemisphere_tie_at_stake(op, c, f); },
+      [&](const engine::AbiOp& op, const spec::ToleranceClass& tc, const engine::Case& c, ref::Format f,
+          const engine::ReferenceResult& want, const engine::AcceptableAnswer& a,
+          const engine::AcceptableConvention* convention, const std::string& where) {
+        if (!a.answer) return;  // a convention's own error: convention_error_violations
+        if (convention == nullptr) {
+          ++wrong;
+          if (first.empty()) first = "an answer of no convention: " + where;
+          return;
+        }
+        const auto fc = engine::fast_case(op, tc, c, f);
+        if (!fc) return;
+        const Real eps = ref::format_epsilon<Real>(f);
+        for (const int k : {0, 3, 40, 2000}) {
+          engine::Observed o;
+          o.status = RC_OK;
+          o.outputs = engine::fast_values(*a.answer);
+          for (auto& arr : o.outputs)
+            for (Real& x : arr) x = engine::round_to(f, x);
+          Real& x = o.outputs[0][0];
+          x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+          const auto fv = engine::fast_verdicts(op, *fc, o, *a.answer);
+          if (!fv) continue;
+          ++decided;
+          const std::optional<Real> error = convention->error(op, c, o.outputs, want.outputs, f);
+          const ref::Verdict v = error ? ref::clause::TOL_1_verdict((*error / eps).toDouble(), fc->bars) : ref::Verdict::fail;
+          if ((fv->worst == ref::Verdict::pass && v != ref::Verdict::pass) ||
+              (fv->best != ref::Verdict::pass && v == ref::Verdict::pass)) {
+            ++wrong;
+            if (first.empty())
+              first = "fast " + std::to_string(static_cast<int>(fv->best)) + ".." + std::to_string(static_cast<int>(fv->worst)) +
+                      ", MPFR " + std::to_string(static_cast<int>(v)) + " at " + std::to_string(k) + " eps off: " + where;
+          }
+        }
+      });
   return wrong;
 }
 
@@ -300,77 +315,55 @@ TEST(FastOracle, AcceptableAnswersAgreeWithTheirConventions) {
 /// interval holds the MPFR error (within 2^-200 of its size: MPFR's own rounding).
 std::size_t convention_error_violations(std::size_t& decided, std::set<std::string>& conventions, std::string& first) {
   std::size_t wrong = 0;
-  engine::CaseOptions options;
-  options.cases_per_family = 16;
-  for (const spec::Clause& clause : the_spec().clauses) {
-    if (clause.level == "Meta") continue;
-    for (const ref::Format f : {ref::Format::binary32, ref::Format::binary64}) {
-      for (const engine::Check& check :
-           engine::checks_for_clause(the_spec(), clause.id, f, options, [](const std::string&) { return true; })) {
-        if (check.log_exp_round_trip || !engine::has_fast_reference(check.op)) continue;
-        const engine::AbiOp& op = engine::judged_op(check.clause, check.op);
+  for_each_acceptable_answer(
+      16, [](const engine::AbiOp&, const engine::Case&, ref::Format) { return true; },
+      [&](const engine::AbiOp& op, const spec::ToleranceClass&, const engine::Case& c, ref::Format f,
+          const engine::ReferenceResult& want, const engine::AcceptableAnswer& a,
+          const engine::AcceptableConvention* convention, const std::string& where) {
+        if (a.answer || convention == nullptr) return;  // hemisphere_tie: acceptable_answer_disagreements
         const Real eps = ref::format_epsilon<Real>(f);
-        for (const engine::Case& c : check.cases) {
-          const engine::ReferenceResult want = op.reference(c.inputs, c.k);
-          if (want.status != ref::Status::ok) continue;
-          const auto fast_want = engine::fast_reference(op, c.inputs, c.k).value_or(engine::fast_reference_from(op, want));
-          const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), fast_want, f);
-          if (!answers) continue;
-          for (const engine::AcceptableAnswer& a : *answers) {
-            if (a.answer) continue;  // hemisphere_tie: acceptable_answer_disagreements
-            const engine::AcceptableConvention* convention = nullptr;
-            for (const engine::AcceptableConvention& x : engine::acceptable_conventions())
-              if (x.id == a.convention && x.applies(op)) convention = &x;
-            if (convention == nullptr) continue;
-            const std::string where = a.convention + " " + clause.id + " " + check.op + " [" + c.label + "] " +
-                                      engine::describe_inputs(op, c, f);
-            for (const int sign : {1, -1})
-              for (const int k : {0, 3, 40, 2000}) {
-                engine::Observed o;
-                o.status = RC_OK;
-                o.outputs = want.outputs;
-                for (auto& arr : o.outputs)
-                  for (Real& x : arr) x = engine::round_to(f, x);
-                Real& x = o.outputs[0][0];
-                x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
-                if (sign < 0)
-                  for (Real& y : o.outputs[0]) y = -y;
-                engine::BoundedValues got;
-                bool finite = true;
-                for (const auto& arr : o.outputs) {
-                  got.emplace_back();
-                  for (const Real& y : arr) {
-                    finite = finite && mpfr::isfinite(y);
-                    got.back().push_back(ref::Bounded(y.toLDouble(), 0));
-                  }
-                }
-                if (!finite) continue;
-                const ref::BoundedScope scope;
-                const std::optional<ref::Bounded> fe = a.error(got);
-                if (!scope.decided()) continue;
-                const std::optional<Real> me = convention->error(op, c, o.outputs, want.outputs, f);
-                auto report = [&](const std::string& what) {
-                  ++wrong;
-                  if (first.empty()) first = what + " (sign " + std::to_string(sign) + ", " + std::to_string(k) + " eps off): " + where;
-                };
-                if (fe.has_value() != me.has_value()) {
-                  report(std::string("the fast error ") + (fe ? "says something, MPFR's nothing" : "says nothing, MPFR's something"));
-                  continue;
-                }
-                if (!fe || !std::isfinite(fe->value()) || mpfr::isnan(*me)) continue;
-                ++decided;
-                conventions.insert(a.convention + " (" + check.op + ")");
-                const Real off = abs(*me - Real(fe->value()));
-                if (!(off <= Real(fe->bound()) + ldexp(abs(*me), -200))) {
-                  report("MPFR error " + me->toString("%.6Rg") + " outside the fast " + Real(fe->value()).toString("%.6Rg") +
-                         " +- " + Real(fe->bound()).toString("%.3Rg"));
-                }
+        for (const int sign : {1, -1})
+          for (const int k : {0, 3, 40, 2000}) {
+            engine::Observed o;
+            o.status = RC_OK;
+            o.outputs = want.outputs;
+            for (auto& arr : o.outputs)
+              for (Real& x : arr) x = engine::round_to(f, x);
+            Real& x = o.outputs[0][0];
+            x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+            if (sign < 0)
+              for (Real& y : o.outputs[0]) y = -y;
+            engine::BoundedValues got;
+            bool finite = true;
+            for (const auto& arr : o.outputs) {
+              got.emplace_back();
+              for (const Real& y : arr) {
+                finite = finite && mpfr::isfinite(y);
+                got.back().push_back(ref::Bounded(y.toLDouble(), 0));
               }
+            }
+            if (!finite) continue;
+            const ref::BoundedScope scope;
+            const std::optional<ref::Bounded> fe = a.error(got);
+            if (!scope.decided()) continue;
+            const std::optional<Real> me = convention->error(op, c, o.outputs, want.outputs, f);
+            auto report = [&](const std::string& what) {
+              ++wrong;
+              if (first.empty()) first = what + " (sign " + std::to_string(sign) + ", " + std::to_string(k) + " eps off): " + where;
+            };
+            if (fe.has_value() != me.has_value()) {
+              report(std::string("the fast error ") + (fe ? "says something, MPFR's nothing" : "says nothing, MPFR's something"));
+              continue;
+            }
+            if (!fe || !std::isfinite(fe->value()) || mpfr::isnan(*me)) continue;
+            ++decided;
+            conventions.insert(a.convention + " (" + op.name + ")");
+            const Real off = abs(*me - Real(fe->value()));
+            if (!(off <= Real(fe->bound()) + ldexp(abs(*me), -200)))
+              report("MPFR error " + me->toString("%.6Rg") + " outside the fast " + Real(fe->value()).toString("%.6Rg") +
+                     " +- " + Real(fe->bound()).toString("%.3Rg"));
           }
-        }
-      }
-    }
-  }
+      });
   return wrong;
 }
 
