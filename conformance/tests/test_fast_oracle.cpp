@@ -34,6 +34,19 @@ struct Tally {
   }
 };
 
+/// An observation near `answer`: each value rounded to the format, the first component then
+/// moved k eps (of its size, or of 1) and rounded again.
+engine::Observed observation_near(const engine::Values& answer, ref::Format f, int k) {
+  engine::Observed o;
+  o.status = RC_OK;
+  o.outputs = answer;
+  for (auto& arr : o.outputs)
+    for (Real& x : arr) x = engine::round_to(f, x);
+  Real& x = o.outputs[0][0];
+  x = engine::round_to(f, x + Real(k) * ref::format_epsilon<Real>(f) * (abs(x) + Real(1)));
+  return o;
+}
+
 /// Runs the fast level against MPFR on the suite's cases; per op.
 std::map<std::string, Tally> compare(int cases_per_family, bool judge) {
   std::map<std::string, Tally> by_op;
@@ -79,15 +92,8 @@ std::map<std::string, Tally> compare(int cases_per_family, bool judge) {
           const auto fc = engine::fast_case(op, tc, c, f);
           // Observations around the correctly rounded reference: 0, 3, 40 and 2000 eps off in
           // one component, on both sides of the bars.
-          const Real eps = ref::format_epsilon<Real>(f);
           for (const int k : {0, 3, 40, 2000}) {
-            engine::Observed o;
-            o.status = RC_OK;
-            o.outputs = want.outputs;
-            for (auto& arr : o.outputs)
-              for (Real& x : arr) x = engine::round_to(f, x);
-            Real& x = o.outputs[0][0];
-            x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+            const engine::Observed o = observation_near(want.outputs, f, k);
             ++t.judged;
             const auto fv = fc ? engine::fast_verdicts(op, *fc, o, *fast) : std::nullopt;
             if (!fv) continue;
@@ -274,13 +280,7 @@ std::size_t acceptable_answer_disagreements(std::size_t& decided, std::string& f
         if (!fc) return;
         const Real eps = ref::format_epsilon<Real>(f);
         for (const int k : {0, 3, 40, 2000}) {
-          engine::Observed o;
-          o.status = RC_OK;
-          o.outputs = engine::fast_values(*a.answer);
-          for (auto& arr : o.outputs)
-            for (Real& x : arr) x = engine::round_to(f, x);
-          Real& x = o.outputs[0][0];
-          x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+          const engine::Observed o = observation_near(engine::fast_values(*a.answer), f, k);
           const auto fv = engine::fast_verdicts(op, *fc, o, *a.answer);
           if (!fv) continue;
           ++decided;
@@ -321,16 +321,9 @@ std::size_t convention_error_violations(std::size_t& decided, std::set<std::stri
           const engine::ReferenceResult& want, const engine::AcceptableAnswer& a,
           const engine::AcceptableConvention* convention, const std::string& where) {
         if (a.answer || convention == nullptr) return;  // hemisphere_tie: acceptable_answer_disagreements
-        const Real eps = ref::format_epsilon<Real>(f);
         for (const int sign : {1, -1})
           for (const int k : {0, 3, 40, 2000}) {
-            engine::Observed o;
-            o.status = RC_OK;
-            o.outputs = want.outputs;
-            for (auto& arr : o.outputs)
-              for (Real& x : arr) x = engine::round_to(f, x);
-            Real& x = o.outputs[0][0];
-            x = engine::round_to(f, x + Real(k) * eps * (abs(x) + Real(1)));
+            engine::Observed o = observation_near(want.outputs, f, k);
             if (sign < 0)
               for (Real& y : o.outputs[0]) y = -y;
             engine::BoundedValues got;
