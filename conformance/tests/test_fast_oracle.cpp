@@ -4,6 +4,7 @@
 // every verdict the fuzz oracle takes from the fast level (surely PASS, surely not FAIL, surely
 // not PASS) is the MPFR judge's. A fast level with a too-small bound or a wrong term is caught.
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -378,6 +379,36 @@ TEST(FastOracle, ConventionErrorsHoldTheirMpfrValues) {
   for (const char* expected : {"angle_range (to_axis_angle)", "angle_range (to_axis)", "sign (sqrt)", "shorter_arc (log)",
                                "shorter_arc (dq_log)", "sign (from_matrix)", "algebraic_root (sqrt)"})
     EXPECT_TRUE(conventions.count(expected)) << expected << " was never decided at the fast level";
+}
+
+/// A scaling by an exact power of two is exact in Bounded arithmetic while the result stays
+/// normal: halving an exact angle adds no rounding, so the sine and cosine of a huge exact angle's
+/// half keep their libm bound. Without it AXIS-1 at angle 2^1023 (a fuzzed input) carried a bound
+/// of 2^959 into the rotor and its point's weight interval held 0: undecided.
+TEST(FastOracle, ScalingByAPowerOfTwoIsExactWhileNormal) {
+  RC_CLAUSE("AXIS-1");
+  using ref::Bounded;
+  const Bounded half = Bounded(0x1p1023) / Bounded(2.0);
+  EXPECT_TRUE(half.exact());
+  EXPECT_EQ(half.value(), 0x1p1022L);
+  EXPECT_TRUE((Bounded(3.0) * Bounded(0.5)).exact());
+  const Bounded scaled = Bounded(1.5L, 1e-20L) * Bounded(4.0);
+  EXPECT_EQ(scaled.value(), 6.0L);
+  EXPECT_EQ(scaled.bound(), 4e-20L + Bounded::kTiny) << "the bound scales exactly, with no rounding of its own";
+  EXPECT_FALSE((Bounded(std::numeric_limits<long double>::denorm_min() * 3, 0) / Bounded(2.0)).exact())
+      << "below the normal range a halving may lose a bit";
+  EXPECT_FALSE((Bounded(3.0) * Bounded(3.0)).exact()) << "3 is no power of two: the product is rounded as any";
+
+  const engine::AbiOp& op = *engine::find_abi_op("rotate_about_axis");
+  const Real top(0x1p1023), below_top(0x1.fffffffffffffp+1023);
+  const engine::Values in{{top, -below_top, Real(0x1p1022)}, {top, -below_top, Real(0x1p1022)}, {top},
+                          {-below_top, Real(0x1p1022), top}};
+  const auto fast = engine::fast_reference(op, in, 0);
+  ASSERT_TRUE(fast.has_value()) << "rotate_about_axis at angle 2^1023 is undecided at the fast level";
+  const engine::ReferenceResult want = op.reference(in, 0);
+  ASSERT_EQ(fast->status, want.status);
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_LE(abs(want.outputs[0][i] - Real(fast->outputs[0][i].value())), Real(fast->outputs[0][i].bound())) << i;
 }
 
 /// MAT-2's eigenvector at the fast level is proved, not trusted (reference/bounded_from_matrix.hpp):

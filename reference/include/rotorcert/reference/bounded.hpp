@@ -25,6 +25,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "quaternion.hpp"
 #include "scalar.hpp"
@@ -89,8 +90,14 @@ class Bounded {
       return {v, 0};
     }
     // A zero factor is exact; other products carry their rounding (fmal, which would tell an exact
-    // product, is software on x86-64 and costs more than it saves).
+    // product, is software on x86-64 and costs more than it saves), except a scaling by an exact
+    // power of two (2 atan2(...), t / 2): exact unless it leaves the normal range, its bound scaled.
     if ((a.exact() && a.v_ == 0) || (b.exact() && b.v_ == 0)) return {v, 0};
+    if (b.exact() && power_of_two(b.v_)) {
+      if (const auto r = scaled(a, b, v)) return *r;
+    } else if (a.exact() && power_of_two(a.v_)) {
+      if (const auto r = scaled(b, a, v)) return *r;
+    }
     Bounded r = result(v, std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_, 0.5L);
     r.nonneg_ = &a == &b || (a.nonneg_ && b.nonneg_);  // x * x of one object is a square
     return r;
@@ -99,6 +106,11 @@ class Bounded {
     const F v = a.v_ / b.v_;
     const F bb = std::fabs(b.v_);
     if (!std::isfinite(a.v_) || !std::isfinite(b.v_)) return {v, 0};
+    // Halving an angle is exact: without this a huge exact angle's half carried a rounding of its
+    // own size, and every sine and cosine of it a bound wider than 1 (rotate_about_axis).
+    if (b.exact() && power_of_two(b.v_) && a.v_ != 0) {
+      if (const auto r = scaled(a, Bounded(1 / b.v_, 0), v)) return *r;
+    }
     if (a.exact() && b.exact()) {
       if (bb == 0 || a.v_ == 0) return {v, 0};  // IEEE's exact answers (0, infinity, NaN), as MPFR's
       return result(v, 0, 0.5L);
@@ -144,6 +156,20 @@ class Bounded {
   /// holds 0.
   static bool may_be_zero(const Bounded& x) {
     return std::isfinite(x.v_) && !x.exact() && std::fabs(x.v_) <= x.e_ * (1 + 4 * kU);
+  }
+  /// Whether x is +-2^k (a finite nonzero value with significand 1).
+  static bool power_of_two(F x) {
+    int e;
+    return std::isfinite(x) && x != 0 && std::fabs(std::frexp(x, &e)) == F(0.5);
+  }
+  /// x times the exact power of two `p`, whose value is v: exact where v is normal and finite (no
+  /// bits lost), with x's bound scaled by |p| (plus kTiny, where that product may have underflowed).
+  /// nullopt where v left the normal range: the caller rounds it as any other product.
+  static std::optional<Bounded> scaled(const Bounded& x, const Bounded& p, F v) {
+    if (!std::isfinite(v) || std::fabs(v) < LDBL_MIN) return std::nullopt;
+    const F e = x.e_ * std::fabs(p.v_);
+    if (!std::isfinite(e)) return std::nullopt;
+    return Bounded(v, e == 0 ? F(0) : e + kTiny, x.nonneg_ && p.v_ > 0);
   }
   /// Whether a + b == v exactly (Knuth's TwoSum error is zero; a sum never underflows inexactly).
   static bool exact_sum(F a, F b, F v) {
