@@ -244,7 +244,8 @@ void for_each_acceptable_answer(int cases_per_family, Take take, Visit visit) {
           const engine::ReferenceResult want = op.reference(c.inputs, c.k);
           if (want.status != ref::Status::ok) continue;
           const auto fast_want = engine::fast_reference(op, c.inputs, c.k).value_or(engine::fast_reference_from(op, want));
-          const auto answers = engine::fast_acceptable_answers(op, c, engine::bounded_values(c.inputs), fast_want, f);
+          const engine::BoundedValues in = engine::bounded_values(c.inputs);  // outlives the answers
+          const auto answers = engine::fast_acceptable_answers(op, c, in, fast_want, f);
           if (!answers) continue;
           for (const engine::AcceptableAnswer& a : *answers) {
             const engine::AcceptableConvention* convention = nullptr;

@@ -192,12 +192,29 @@ T dq_log_error(const std::vector<T>& sigma_in, const Arrays<T>& got) {
   return larger(larger(m.rotation, m.translation), excess);
 }
 
-/// The case's inputs as exact Bounded values (values of the format).
-Arrays<ref::Bounded> bounded_inputs_of(const Case& c) {
-  Arrays<ref::Bounded> in(c.inputs.size());
-  for (std::size_t a = 0; a < c.inputs.size(); ++a)
-    for (const Real& x : c.inputs[a]) in[a].push_back(ref::Bounded(x.toLDouble(), 0));
-  return in;
+/// The scalar of an op's arrays (Values: Real; AcceptableConvention::BoundedArrays: ref::Bounded).
+template <class ArraysT>
+using ScalarOf = std::decay_t<decltype(std::declval<ArraysT>()[0][0])>;
+
+/// Sets the `error` and `fast_error` of convention `a` from one generic form
+/// error(c, inputs, got, want) -> std::optional<T>, `inputs` c's inputs in the scalar of got:
+/// the judge's on Real, the fast oracle's on Bounded, one body.
+template <class Error>
+void set_error(AcceptableConvention& a, Error error) {
+  a.error = [error](const AbiOp&, const Case& c, const Values& got, const Values& want,
+                    ref::Format) -> std::optional<Real> { return error(c, c.inputs, got, want); };
+  a.fast_error = [error](const AbiOp&, const Case& c, const AcceptableConvention::BoundedArrays& in,
+                         const AcceptableConvention::BoundedArrays& got, const AcceptableConvention::BoundedArrays& want,
+                         ref::Format) -> std::optional<ref::Bounded> { return error(c, in, got, want); };
+}
+
+/// Sets the relevance of convention `a` that reads the spec's answer, and its fast form, from one
+/// generic predicate relevant(want).
+template <class Relevant>
+void set_answer_relevance(AcceptableConvention& a, Relevant relevant) {
+  a.relevant = [relevant](const AbiOp&, const Case&, const Values& want, ref::Format) { return relevant(want); };
+  a.fast_relevant = [relevant](const AbiOp&, const Case&, const AcceptableConvention::BoundedArrays& want,
+                               ref::Format) { return relevant(want); };
 }
 
 /// The tie band of ACC-1 (hemisphere_tie): |a.b| within 8 eps of 0, where the rounding of a
@@ -338,69 +355,53 @@ std::vector<AcceptableConvention> build_conventions() {
   std::vector<AcceptableConvention> all;
   const auto is = [](const char* name) { return [name](const AbiOp& op) { return op.name == name; }; };
 
-  // The fast forms below evaluate the same templates on ref::Bounded (see AcceptableConvention).
-  using BoundedArrays = AcceptableConvention::BoundedArrays;
+  // Each error below is one generic form (set_error): the judge runs it on Real, the fast oracle
+  // on ref::Bounded; so is each relevance that reads the spec's answer (set_answer_relevance).
+  const auto always = [](const AbiOp&, const Case&, ref::Format) { return true; };
+  // (A convention's error and relevance are set after it is added.)
+  const auto add = [&all](const char* id, const char* description, std::function<bool(const AbiOp&)> applies,
+                          Relevance relevant) -> AcceptableConvention& {
+    return all.emplace_back(AcceptableConvention{id, description, false, std::move(applies), std::move(relevant), {}});
+  };
 
   // MAT-2: q and -q are one rotation; the canonical sign (w > 0) is the spec's choice.
-  all.push_back({"sign", "from_matrix returns -q of the canonical q (w > 0): the same rotation", false, is("from_matrix"),
-                 [](const AbiOp&, const Case&, ref::Format) { return true; },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   return rotation_error_of(got[0], quat_of(want[0]));
-                 }});
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    return rotation_error_of(got[0], quat_of(want[0]));
-  };
+  set_error(add("sign", "from_matrix returns -q of the canonical q (w > 0): the same rotation", is("from_matrix"), always),
+            [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+              return rotation_error_of(got[0], quat_of(want[0]));
+            });
 
   // AXANG-1: (theta, u) and (2 pi - theta, -u), or (theta - 2 pi, u), describe one rotation; the
   // identity has every unit axis. Compared as rotations, with a unit axis required
   // (axis_angle_error).
-  all.push_back({"identity_axis", "to_axis_angle of the identity rotation (angle 0 or 2 pi) returns another unit axis",
-                 false, is("to_axis_angle"),
-                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return identity_angle(want); },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   if (!identity_angle(want)) return std::nullopt;
-                   return axis_angle_error(got, want);
-                 }});
-  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
-    return identity_angle(want);
-  };
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    if (!identity_angle(want)) return std::nullopt;
-    return axis_angle_error(got, want);
-  };
-  all.push_back({"angle_range", "to_axis_angle returns the angle in another range ([0, pi] with the axis flipped, or signed)",
-                 false, is("to_axis_angle"),
-                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return !identity_angle(want); },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   if (identity_angle(want)) return std::nullopt;
-                   return axis_angle_error(got, want);
-                 }});
-  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
-    return !identity_angle(want);
-  };
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    if (identity_angle(want)) return std::nullopt;
-    return axis_angle_error(got, want);
-  };
+  {
+    AcceptableConvention& a = add("identity_axis", "to_axis_angle of the identity rotation (angle 0 or 2 pi) returns another unit axis",
+                                  is("to_axis_angle"), {});
+    set_answer_relevance(a, [](const auto& want) { return identity_angle(want); });
+    set_error(a, [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+      if (!identity_angle(want)) return std::nullopt;
+      return axis_angle_error(got, want);
+    });
+  }
+  {
+    AcceptableConvention& a = add("angle_range", "to_axis_angle returns the angle in another range ([0, pi] with the axis flipped, or signed)",
+                                  is("to_axis_angle"), {});
+    set_answer_relevance(a, [](const auto& want) { return !identity_angle(want); });
+    set_error(a, [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+      if (identity_angle(want)) return std::nullopt;
+      return axis_angle_error(got, want);
+    });
+  }
 
   // AXANG-3: an angle alone is another correct answer where it is the angle of the same rotation
   // about some unit axis: 2 pi - theta (the angle in [0, pi], about -u), or a signed angle.
   // Compared by the rotation angle rho(x) in [0, pi] (rotation_angle).
-  all.push_back({"angle_range", "to_angle returns the angle in another range ([0, pi], the angle about -u, or signed)",
-                 false, is("to_angle"),
-                 [](const AbiOp&, const Case&, ref::Format) { return true; },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   if (mpfr::isnan(got[0][0])) return got[0][0];
-                   return abs(rotation_angle(got[0][0]) - rotation_angle(want[0][0]));
-                 }});
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    if (is_nan_of(got[0][0])) return got[0][0];
-    return abs(rotation_angle(got[0][0]) - rotation_angle(want[0][0]));
-  };
+  set_error(add("angle_range", "to_angle returns the angle in another range ([0, pi], the angle about -u, or signed)",
+                is("to_angle"), always),
+            [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+              using std::abs;
+              if (is_nan_of(got[0][0])) return got[0][0];
+              return abs(rotation_angle(got[0][0]) - rotation_angle(want[0][0]));
+            });
   // AXANG-4: the axis of AXANG-1 alone. Where theta > pi (w < 0) a library whose angles lie in
   // [0, pi] (Eigen's AngleAxis, nalgebra) returns -u, the axis of the same rotation by 2 pi - theta:
   // the axis of its angle_range. The identity has every unit axis (identity_axis).
@@ -408,179 +409,115 @@ std::vector<AcceptableConvention> build_conventions() {
     return !c.inputs.empty() && c.inputs[0].size() >= 4 && c.inputs[0][0] == 0 && c.inputs[0][1] == 0 &&
            c.inputs[0][2] == 0;
   };
-  all.push_back({"identity_axis", "to_axis of the identity rotation (angle 0 or 2 pi) returns another unit axis", false,
-                 is("to_axis"),
-                 [pure_real_input](const AbiOp&, const Case& c, ref::Format) { return pure_real_input(c); },
-                 [pure_real_input](const AbiOp&, const Case& c, const Values& got, const Values&,
-                                   ref::Format) -> std::optional<Real> {
-                   if (!pure_real_input(c)) return std::nullopt;
-                   return axis_defect(got[0]);
-                 }});
-  all.back().fast_error = [pure_real_input](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
-                                            ref::Format) -> std::optional<ref::Bounded> {
-    if (!pure_real_input(c)) return std::nullopt;
-    return axis_defect(got[0]);
-  };
+  set_error(add("identity_axis", "to_axis of the identity rotation (angle 0 or 2 pi) returns another unit axis", is("to_axis"),
+                [pure_real_input](const AbiOp&, const Case& c, ref::Format) { return pure_real_input(c); }),
+            [pure_real_input](const Case& c, const auto&, const auto& got,
+                              const auto&) -> std::optional<ScalarOf<decltype(got)>> {
+              if (!pure_real_input(c)) return std::nullopt;
+              return axis_defect(got[0]);
+            });
   const auto obtuse_input = [pure_real_input](const Case& c) {
     return !pure_real_input(c) && !c.inputs.empty() && c.inputs[0].size() >= 4 && c.inputs[0][3] <= 0;
   };
   // |got + want| (the axis -u against u), and a unit axis.
-  const auto flipped_axis_error = [](const auto& got, const auto& want) {
-    using T = std::decay_t<decltype(got[0][0])>;
-    using std::sqrt;
-    T d(0);
-    for (int i = 0; i < 3; ++i) d += (got[0][i] + want[0][i]) * (got[0][i] + want[0][i]);
-    return larger(T(sqrt(d)), axis_defect(got[0]));
-  };
-  all.push_back({"angle_range", "to_axis returns -u where theta >= pi: the axis of the same rotation by 2 pi - theta in [0, pi]",
-                 false, is("to_axis"),
-                 [obtuse_input](const AbiOp&, const Case& c, ref::Format) { return obtuse_input(c); },
-                 [obtuse_input, flipped_axis_error](const AbiOp&, const Case& c, const Values& got, const Values& want,
-                                                    ref::Format) -> std::optional<Real> {
-                   if (!obtuse_input(c)) return std::nullopt;
-                   return flipped_axis_error(got, want);
-                 }});
-  all.back().fast_error = [obtuse_input, flipped_axis_error](const AbiOp&, const Case& c, const BoundedArrays& got,
-                                                             const BoundedArrays& want,
-                                                             ref::Format) -> std::optional<ref::Bounded> {
-    if (!obtuse_input(c)) return std::nullopt;
-    return flipped_axis_error(got, want);
-  };
+  set_error(add("angle_range", "to_axis returns -u where theta >= pi: the axis of the same rotation by 2 pi - theta in [0, pi]",
+                is("to_axis"), [obtuse_input](const AbiOp&, const Case& c, ref::Format) { return obtuse_input(c); }),
+            [obtuse_input](const Case& c, const auto&, const auto& got,
+                           const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+              using T = ScalarOf<decltype(got)>;
+              using std::sqrt;
+              if (!obtuse_input(c)) return std::nullopt;
+              T d(0);
+              for (int i = 0; i < 3; ++i) d += (got[0][i] + want[0][i]) * (got[0][i] + want[0][i]);
+              return larger(T(sqrt(d)), axis_defect(got[0]));
+            });
 
   // SQRT-1: -s is the other square root of q^ and the same rotation (as MAT-2's -q); q^ = -1 has
   // every unit pure quaternion as a square root (+z is the spec's choice, as LOG-2's).
-  all.push_back({"sign", "sqrt returns -s of the canonical s (w > 0): the other square root, the same rotation", false,
-                 is("sqrt"), [](const AbiOp&, const Case&, ref::Format) { return true; },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   return rotation_error_of(got[0], quat_of(want[0]));
-                 }});
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    return rotation_error_of(got[0], quat_of(want[0]));
-  };
+  set_error(add("sign", "sqrt returns -s of the canonical s (w > 0): the other square root, the same rotation", is("sqrt"),
+                always),
+            [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+              return rotation_error_of(got[0], quat_of(want[0]));
+            });
   // SQRT-1 on a non-unit q (EDGE-5): the algebra's square root s with s^2 = q has |s| = sqrt|q|
   // (numpy-quaternion's np.sqrt, GLM's and PyGLM's sqrt, kingdon's sqrt()): the rotation root
   // scaled, a correct answer of the algebra. Measured as the rotation of s/|s| against the
   // reference (sign-free, as `sign`) and the norm relation | |s|^2 / |q| - 1 |.
-  all.push_back({"algebraic_root", "sqrt of a non-unit q returns the algebra's root s (s^2 = q, |s| = sqrt|q|)", false,
-                 is("sqrt"), [](const AbiOp&, const Case&, ref::Format) { return true; },
-                 [](const AbiOp&, const Case& c, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   return algebraic_root_error(c.inputs[0], got[0], want[0]);
-                 }});
-  all.back().fast_error = [](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    return algebraic_root_error(bounded_inputs_of(c)[0], got[0], want[0]);
-  };
+  set_error(add("algebraic_root", "sqrt of a non-unit q returns the algebra's root s (s^2 = q, |s| = sqrt|q|)", is("sqrt"),
+                always),
+            [](const Case&, const auto& in, const auto& got, const auto& want) {
+              return algebraic_root_error(in[0], got[0], want[0]);
+            });
   // SQRT-1 where w < 0: q^ and -q^ are one rotation; a library of rotations (not of quaternions:
   // SciPy's Rotation ** 0.5, nalgebra's powf(0.5)) returns the rotation's principal root, the
   // root of -q^, half of its angle in [0, pi] (for -1, the identity). Measured as `sign`.
-  all.push_back({"principal_root", "sqrt returns the root of -q^ where w < 0: the rotation's principal square root (half its angle in [0, pi])",
-                 false, is("sqrt"),
-                 [](const AbiOp&, const Case& c, ref::Format) { return c.inputs[0][3] < 0; },
-                 [](const AbiOp&, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
-                   if (!(c.inputs[0][3] < 0)) return std::nullopt;
-                   const auto root = clause::SQRT_1_sqrt(-quat_of(c.inputs[0]));
-                   if (root.status != ref::Status::ok) return std::nullopt;
-                   return rotation_error_of(got[0], root.value);
-                 }});
-  all.back().fast_error = [](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    if (!(c.inputs[0][3] < 0)) return std::nullopt;
-    const auto root = clause::SQRT_1_sqrt(-quat_of(bounded_inputs_of(c)[0]));
-    if (root.status != ref::Status::ok) return std::nullopt;
-    return rotation_error_of(got[0], root.value);
-  };
+  set_error(add("principal_root", "sqrt returns the root of -q^ where w < 0: the rotation's principal square root (half its angle in [0, pi])",
+                is("sqrt"), [](const AbiOp&, const Case& c, ref::Format) { return c.inputs[0][3] < 0; }),
+            [](const Case& c, const auto& in, const auto& got, const auto&) -> std::optional<ScalarOf<decltype(got)>> {
+              if (!(c.inputs[0][3] < 0)) return std::nullopt;
+              const auto root = clause::SQRT_1_sqrt(-quat_of(in[0]));
+              if (root.status != ref::Status::ok) return std::nullopt;
+              return rotation_error_of(got[0], root.value);
+            });
   const auto minus_one_input = [pure_real_input](const Case& c) { return pure_real_input(c) && c.inputs[0][3] < 0; };
-  all.push_back({"minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", false,
-                 is("sqrt"),
-                 [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); },
-                 [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values&,
-                                   ref::Format) -> std::optional<Real> {
-                   if (!minus_one_input(c)) return std::nullopt;
-                   return minus_one_root_error(got[0]);
-                 }});
-  all.back().fast_error = [minus_one_input](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
-                                            ref::Format) -> std::optional<ref::Bounded> {
-    if (!minus_one_input(c)) return std::nullopt;
-    return minus_one_root_error(got[0]);
-  };
+  set_error(add("minus_one_axis", "sqrt of a negative real quaternion returns another unit pure quaternion", is("sqrt"),
+                [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); }),
+            [minus_one_input](const Case& c, const auto&, const auto& got,
+                              const auto&) -> std::optional<ScalarOf<decltype(got)>> {
+              if (!minus_one_input(c)) return std::nullopt;
+              return minus_one_root_error(got[0]);
+            });
 
   // LOG-1/LOG-2: every v with exp(v) = +-q and |v| <= pi is a logarithm of the rotation; the
   // principal branch (and +z for a negative real q) is the spec's choice (log_error).
-  all.push_back({"minus_one_axis", "log of a negative real quaternion returns pi times another unit axis", false, is("log"),
-                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return negative_real_log(want); },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   // pi u' only: a log near 0 is the log of -q, shorter_arc's case.
-                   if (!negative_real_log(want) || norm_of(got[0], 0, 3) < pi_of<Real>() / Real(2)) return std::nullopt;
-                   return log_error(got, want);
-                 }});
-  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
-    return negative_real_log(want);
-  };
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    using B = ref::Bounded;
-    if (!negative_real_log(want) || norm_of(got[0], 0, 3) < pi_of<B>() / B(2)) return std::nullopt;
-    return log_error(got, want);
-  };
+  {
+    AcceptableConvention& a = add("minus_one_axis", "log of a negative real quaternion returns pi times another unit axis",
+                                  is("log"), {});
+    set_answer_relevance(a, [](const auto& want) { return negative_real_log(want); });
+    set_error(a, [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+      using T = ScalarOf<decltype(got)>;
+      // pi u' only: a log near 0 is the log of -q, shorter_arc's case.
+      if (!negative_real_log(want) || norm_of(got[0], 0, 3) < pi_of<T>() / T(2)) return std::nullopt;
+      return log_error(got, want);
+    });
+  }
   // A negative real q included: its log of -q is 0 (log(-1) = 0, the identity's log).
-  all.push_back({"shorter_arc", "log returns the logarithm of -q (|v| <= pi/2) where w <= 0: the same rotation", false, is("log"),
-                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse_log(want); },
-                 [](const AbiOp&, const Case&, const Values& got, const Values& want, ref::Format) -> std::optional<Real> {
-                   if (!obtuse_log(want)) return std::nullopt;
-                   if (negative_real_log(want) && norm_of(got[0], 0, 3) >= pi_of<Real>() / Real(2))
-                     return std::nullopt;  // pi u': minus_one_axis
-                   return log_error(got, want);
-                 }});
-  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
-    return obtuse_log(want);
-  };
-  all.back().fast_error = [](const AbiOp&, const Case&, const BoundedArrays& got, const BoundedArrays& want,
-                             ref::Format) -> std::optional<ref::Bounded> {
-    using B = ref::Bounded;
-    if (!obtuse_log(want)) return std::nullopt;
-    if (negative_real_log(want) && norm_of(got[0], 0, 3) >= pi_of<B>() / B(2)) return std::nullopt;
-    return log_error(got, want);
-  };
+  {
+    AcceptableConvention& a = add("shorter_arc", "log returns the logarithm of -q (|v| <= pi/2) where w <= 0: the same rotation",
+                                  is("log"), {});
+    set_answer_relevance(a, [](const auto& want) { return obtuse_log(want); });
+    set_error(a, [](const Case&, const auto&, const auto& got, const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+      using T = ScalarOf<decltype(got)>;
+      if (!obtuse_log(want)) return std::nullopt;
+      if (negative_real_log(want) && norm_of(got[0], 0, 3) >= pi_of<T>() / T(2)) return std::nullopt;  // pi u': minus_one_axis
+      return log_error(got, want);
+    });
+  }
 
   // DQ-8: every xi' with DQ-9(xi') = +-sigma and |xi'_r| <= pi is a logarithm of the rigid motion;
   // at r = -1 (minus_one_axis) the axis is free up to exp(xi') = sigma, and where r_w <= 0 the log
   // of -sigma (shorter_arc) is the same motion. Measured as METRIC-7 of DQ-9(xi') against sigma
   // (dq_log_error).
-  all.push_back({"minus_one_axis", "dq_log of a dual quaternion whose real part is a negative real returns another log of it (|xi_r| = pi)",
-                 false, is("dq_log"),
-                 [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); },
-                 [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values&,
-                                   ref::Format) -> std::optional<Real> {
-                   if (!minus_one_input(c) || norm_of(got[0], 0, 3) < pi_of<Real>() / Real(2)) return std::nullopt;
-                   return dq_log_error(c.inputs[0], got);
-                 }});
-  all.back().fast_error = [minus_one_input](const AbiOp&, const Case& c, const BoundedArrays& got, const BoundedArrays&,
-                                            ref::Format) -> std::optional<ref::Bounded> {
-    using B = ref::Bounded;
-    if (!minus_one_input(c) || norm_of(got[0], 0, 3) < pi_of<B>() / B(2)) return std::nullopt;
-    return dq_log_error(bounded_inputs_of(c)[0], got);
-  };
-  all.push_back({"shorter_arc", "dq_log returns the logarithm of -sigma (|xi_r| <= pi/2) where r_w <= 0: the same rigid motion",
-                 false, is("dq_log"),
-                 [](const AbiOp&, const Case&, const Values& want, ref::Format) { return obtuse_log(want); },
-                 [minus_one_input](const AbiOp&, const Case& c, const Values& got, const Values& want,
-                                   ref::Format) -> std::optional<Real> {
-                   if (!obtuse_log(want)) return std::nullopt;
-                   if (minus_one_input(c) && norm_of(got[0], 0, 3) >= pi_of<Real>() / Real(2))
-                     return std::nullopt;  // pi u': minus_one_axis
-                   return dq_log_error(c.inputs[0], got);
-                 }});
-  all.back().fast_relevant = [](const AbiOp&, const Case&, const BoundedArrays& want, ref::Format) {
-    return obtuse_log(want);
-  };
-  all.back().fast_error = [minus_one_input](const AbiOp&, const Case& c, const BoundedArrays& got,
-                                            const BoundedArrays& want, ref::Format) -> std::optional<ref::Bounded> {
-    using B = ref::Bounded;
-    if (!obtuse_log(want)) return std::nullopt;
-    if (minus_one_input(c) && norm_of(got[0], 0, 3) >= pi_of<B>() / B(2)) return std::nullopt;
-    return dq_log_error(bounded_inputs_of(c)[0], got);
-  };
+  set_error(add("minus_one_axis", "dq_log of a dual quaternion whose real part is a negative real returns another log of it (|xi_r| = pi)",
+                is("dq_log"), [minus_one_input](const AbiOp&, const Case& c, ref::Format) { return minus_one_input(c); }),
+            [minus_one_input](const Case& c, const auto& in, const auto& got,
+                              const auto&) -> std::optional<ScalarOf<decltype(got)>> {
+              using T = ScalarOf<decltype(got)>;
+              if (!minus_one_input(c) || norm_of(got[0], 0, 3) < pi_of<T>() / T(2)) return std::nullopt;
+              return dq_log_error(in[0], got);
+            });
+  {
+    AcceptableConvention& a = add("shorter_arc", "dq_log returns the logarithm of -sigma (|xi_r| <= pi/2) where r_w <= 0: the same rigid motion",
+                                  is("dq_log"), {});
+    set_answer_relevance(a, [](const auto& want) { return obtuse_log(want); });
+    set_error(a, [minus_one_input](const Case& c, const auto& in, const auto& got,
+                                   const auto& want) -> std::optional<ScalarOf<decltype(got)>> {
+      using T = ScalarOf<decltype(got)>;
+      if (!obtuse_log(want)) return std::nullopt;
+      if (minus_one_input(c) && norm_of(got[0], 0, 3) >= pi_of<T>() / T(2)) return std::nullopt;  // pi u': minus_one_axis
+      return dq_log_error(in[0], got);
+    });
+  }
 
   // EDGE-3: at a hemisphere tie (|a.b| within rounding of 0) both arcs have the same length; the
   // spec breaks the tie one way ("flip iff a.b < 0 strictly"), a library may break it the other.

@@ -240,6 +240,16 @@ std::optional<FastReference> fast_reference(const AbiOp& op, const BoundedValues
   return evaluate(op, it->second, in, k);
 }
 
+namespace {
+
+/// y widened by 2^-240 of its size: an interval that holds the exact value then holds MPFR's
+/// 256-bit one too, and one that holds MPFR's holds the exact one.
+Bounded widened_to_hold_mpfr(const Bounded& y) {
+  return Bounded(y.value(), y.bound() + std::ldexp(std::fabs(y.value()), -240) + Bounded::kTiny);
+}
+
+}  // namespace
+
 FastReference fast_reference_from(const AbiOp& op, const ReferenceResult& r) {
   FastReference f{r.status, {}};
   if (r.status != ref::Status::ok) {
@@ -249,8 +259,7 @@ FastReference fast_reference_from(const AbiOp& op, const ReferenceResult& r) {
   f.outputs = bounded_values(r.outputs);
   for (BoundedArray& arr : f.outputs)
     for (Bounded& y : arr)
-      if (std::isfinite(y.value()))
-        y = Bounded(y.value(), y.bound() + std::ldexp(std::fabs(y.value()), -240) + Bounded::kTiny);
+      if (std::isfinite(y.value())) y = widened_to_hold_mpfr(y);
   return f;
 }
 
@@ -309,7 +318,7 @@ std::optional<Bounded> fast_scale(const AbiOp& op, const Case& c) {
   const ref::BoundedScope scope;
   const Bounded s = log ? rigid_scales::dq_log_scale(dq(in[0])) : rigid_scales::dq_translation_scale(dq(in[0]));
   if (!scope.decided() || !std::isfinite(s.value())) return std::nullopt;
-  return Bounded(s.value(), s.bound() + std::ldexp(std::fabs(s.value()), -240) + Bounded::kTiny);
+  return widened_to_hold_mpfr(s);
 }
 
 }  // namespace
@@ -438,8 +447,8 @@ std::optional<std::vector<AcceptableAnswer>> fast_acceptable_answers(const AbiOp
     if (!relevant) return std::nullopt;  // relevance undecided: MPFR's to judge
     if (a.id != "hemisphere_tie") {
       if (!a.fast_error) return std::nullopt;  // no fast form: MPFR's to judge
-      answers.push_back({a.id, std::nullopt, [&a, &op, &c, &want, f](const BoundedValues& got) {
-                           return a.fast_error(op, c, got, want.outputs, f);
+      answers.push_back({a.id, std::nullopt, [&a, &op, &c, &in, &want, f](const BoundedValues& got) {
+                           return a.fast_error(op, c, in, got, want.outputs, f);
                          }});
       continue;
     }

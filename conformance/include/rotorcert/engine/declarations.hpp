@@ -115,8 +115,9 @@ struct AcceptableConvention {
   /// MPFR judges the convention. A relevance read from the input alone needs no fast form.
   using BoundedArrays = std::vector<std::vector<ref::Bounded>>;
   std::function<bool(const AbiOp& op, const Case& c, const BoundedArrays& want, ref::Format f)> fast_relevant{};
-  std::function<std::optional<ref::Bounded>(const AbiOp& op, const Case& c, const BoundedArrays& got,
-                                            const BoundedArrays& want, ref::Format f)>
+  /// `in`: c's inputs as Bounded values (formed once per element by the caller).
+  std::function<std::optional<ref::Bounded>(const AbiOp& op, const Case& c, const BoundedArrays& in,
+                                            const BoundedArrays& got, const BoundedArrays& want, ref::Format f)>
       fast_error{};
 };
 const std::vector<AcceptableConvention>& acceptable_conventions();

@@ -117,7 +117,7 @@ FastVerdicts fast_verdicts_of_error(const FastCase& fc, const ref::Bounded& e);
 ///     (fast_verdicts_of_rounding with the answer as `want`) is the convention's error;
 ///   - else `error`: the convention's own error of an output (AcceptableConvention::fast_error,
 ///     against the spec's answer `want`), nullopt where the convention says nothing about it; an
-///     undecided bound shows in ref::BoundedScope. Valid while op, c and want are.
+///     undecided bound shows in ref::BoundedScope. Valid while op, c, in and want are.
 /// A convention whose error is undefined on c gives none. nullopt where a relevant convention has
 /// no fast form, or where a relevance or an answer is undecided.
 struct AcceptableAnswer {
