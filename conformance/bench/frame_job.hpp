@@ -25,11 +25,15 @@
 //             the position and the normal: the same loop for every method, as a vertex shader
 //             would do it (method.hpp: "the suite blends the 3x4 matrices"), not the table's
 //             skin_linear, which takes (q, t) per influence and so makes 4 matrices per vertex.
-//             DQS: the 4 influences' dual quaternions gathered per vertex, dq_blend (k = 4),
-//             dq_apply_point on the position and, with the dual part zeroed, on the normal;
-//             tables without dq_blend + dq_apply_point: skin_dual_quaternion fed with (real
-//             part, translation) of each skinning dual quaternion (translation by the suite,
-//             once per joint).
+//             DQS: likewise the suite's loop over the table's skinning dual quaternions, as
+//             Kavan et al.'s shader does it (2008, Algorithm 1): each influence signed against
+//             the pivot (DQ-6), the weighted sum, its rotation and translation (DQ-3) applied
+//             to the position and the rotation to the normal. Not the table's dq_blend (k = 4)
+//             + dq_apply_point per vertex: their batch layout takes the 4 influences' dual
+//             quaternions inline per element, and gathering them (32 scalars a vertex) cost
+//             more than the whole LBS vertex loop; the table's DLB per element is timed by
+//             the op benchmark dq_blend (k = 4) against blend_qlb, and the render check
+//             (SkinJob) still skins with it.
 // Normals are not renormalised (a shader does that per fragment); PoseJob/SkinJob's are.
 //
 // Rigid rigs only: every joint's global stretch K must be the identity (no rest scale other

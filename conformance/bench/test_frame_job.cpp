@@ -2,6 +2,8 @@
 // frame: for every skinning method of the built-in tables, on the built-in simple and medium
 // characters, its vertices agree with PoseJob + SkinJob's within VIS-1's strict bars (the spec's
 // classes vis-mm and vis-rad), at frames between keyframes and on the clip's ends.
+#include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -113,6 +115,34 @@ TEST(FrameJob, IsTheRenderCheckFrameOnFallbackRoutes) {
   ASSERT_EQ(lbs.pose_blend(), r::PoseBlend::nlerp);
   check_character(r::Complexity::simple, {dqs, lbs});
   check_character(r::Complexity::medium, {dqs, lbs});
+}
+
+// A table may answer either sign of a dual quaternion (the same rigid motion; DQ-2 compares up to
+// sign): dq's dq_compose wrapped to negate every other element's output, so the skinning palette
+// holds both hemispheres, and the frame's vertex loop must sign each influence against the pivot
+// (DQ-6) as the table's dq_blend does for the render check. Without that, vertices whose
+// influences disagree in sign land far off.
+int (*g_dq_compose)(std::size_t, const double*, const double*, double*, std::uint8_t*) = nullptr;
+int dq_compose_alternating_sign(std::size_t n, const double* a, const double* b, double* out, std::uint8_t* st) {
+  const int rc = g_dq_compose(n, a, b, out, st);
+  for (std::size_t e = 1; e < n; e += 2)
+    for (std::size_t c = 0; c < 8; ++c) out[8 * e + c] = -out[8 * e + c];
+  return rc;
+}
+
+TEST(FrameJob, IsTheRenderCheckFrameWhenTheTableAnswersEitherSign) {
+  RC_CLAUSE("DQ-6");
+  RC_CLAUSE("VIS-1");
+  const rc_impl* dq = rotorcert::impl::find_builtin("dq", RC_SCALAR_FLOAT64);
+  ASSERT_NE(dq, nullptr);
+  rc_ops_f64 ops = *dq->f64;
+  g_dq_compose = ops.dq_compose;
+  ops.dq_compose = &dq_compose_alternating_sign;
+  rc_impl table = *dq;
+  table.f64 = &ops;
+  const r::SkinningMethod dqs = r::make_method(table, r::Technique::dqs);
+  check_character(r::Complexity::simple, {dqs});
+  check_character(r::Complexity::medium, {dqs});
 }
 
 // A job that cannot be the render check's frame says so instead of running.
