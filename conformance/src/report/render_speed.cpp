@@ -1,6 +1,6 @@
-// sections.speed rendered (render_speed.hpp). The renderers never throw on a section with
+// sections.speed in HTML and Markdown (sections.hpp). The renderers never throw on a section with
 // missing fields: every read goes through str / arr / obj_at or checks the type.
-#include "render_speed.hpp"
+#include "sections.hpp"
 
 #include <algorithm>
 #include <cmath>

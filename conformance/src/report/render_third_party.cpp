@@ -1,6 +1,6 @@
-// sections.third_party rendered (render_third_party.hpp). Like every renderer here it never throws
+// sections.third_party in HTML and Markdown (sections.hpp). Like every renderer here it never throws
 // on a section with missing fields: reads go through str / arr / obj_at or check the type.
-#include "render_third_party.hpp"
+#include "sections.hpp"
 
 #include <algorithm>
 #include <cstdio>
