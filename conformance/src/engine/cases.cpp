@@ -898,7 +898,9 @@ const std::map<std::string, std::string>& example_ops() {
       {"dq_from_rt", "dq_from_rotation_translation"}, {"dq_compose", "dq_compose"},
       {"dq_apply_point", "dq_apply_point"}, {"dq_normalize", "dq_normalize"}, {"dq_sclerp", "dq_sclerp"},
       {"dq_dlb", "dq_blend"}, {"axis_rotation", "rotate_about_axis"}, {"lbs_vertex", "skin_linear"},
-      {"dqs_vertex", "skin_dual_quaternion"}};
+      {"dqs_vertex", "skin_dual_quaternion"}, {"to_angle", "to_angle"}, {"to_axis", "to_axis"}, {"sqrt", "sqrt"},
+      {"dq_to_rt", "dq_to_rotation_translation"}, {"dq_log", "dq_log"}, {"dq_exp", "dq_exp"},
+      {"rigid_compose", "rigid_compose"}, {"rigid_apply", "rigid_apply"}, {"rigid_inverse", "rigid_inverse"}};
   return m;
 }
 
@@ -923,7 +925,9 @@ std::optional<Case> example_case(const spec::Spec& spec, const spec::Example& ex
     return r;
   };
   auto s = [&](const std::string& key) { return std::vector<Real>{in.scalar(key)}; };
-  if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log") c.inputs = {q(in.quat("q"))};
+  if (op == "normalize" || op == "inverse" || op == "to_matrix" || op == "to_axis_angle" || op == "log" ||
+      op == "to_angle" || op == "to_axis" || op == "sqrt")
+    c.inputs = {q(in.quat("q"))};
   else if (op == "compose") c.inputs = {q(in.quat("a")), q(in.quat("b"))};
   else if (op == "apply_vector") c.inputs = {q(in.quat("q")), flat(in.vec3("v"))};
   else if (op == "apply_bivector") c.inputs = {q(in.quat("q")), flat(in.vec3("b"))};
@@ -936,7 +940,11 @@ std::optional<Case> example_case(const spec::Spec& spec, const spec::Example& ex
   else if (op == "dq_from_rotation_translation") c.inputs = {q(in.quat("q")), flat(in.vec3("t"))};
   else if (op == "dq_compose") c.inputs = {flat(in.dq("a")), flat(in.dq("b"))};
   else if (op == "dq_apply_point") c.inputs = {flat(in.dq("d")), flat(in.vec3("p"))};
-  else if (op == "dq_normalize") c.inputs = {flat(in.dq("d"))};
+  else if (op == "dq_normalize" || op == "dq_to_rotation_translation" || op == "dq_log") c.inputs = {flat(in.dq("d"))};
+  else if (op == "dq_exp") c.inputs = {in.scalars("xi")};
+  else if (op == "rigid_compose") c.inputs = {q(in.quat("qa")), flat(in.vec3("ta")), q(in.quat("qb")), flat(in.vec3("tb"))};
+  else if (op == "rigid_apply") c.inputs = {q(in.quat("q")), flat(in.vec3("t")), flat(in.vec3("p"))};
+  else if (op == "rigid_inverse") c.inputs = {q(in.quat("q")), flat(in.vec3("t"))};
   else if (op == "dq_sclerp") c.inputs = {flat(in.dq("a")), flat(in.dq("b")), s("t")};
   else if (op == "dq_blend") {
     std::vector<Real> ds;

@@ -1,5 +1,6 @@
-// Rigid ops: dual quaternions (DQ-*), motors (MOTOR-*), rotation about a line (AXIS-1) and
-// skinning of one vertex (SKIN-*), from rigid_ops.hpp and motor.hpp.
+// Rigid ops: dual quaternions (DQ-*), rigid transforms as rotation + translation (RIGID-*),
+// motors (MOTOR-*), rotation about a line (AXIS-1) and skinning of one vertex (SKIN-*), from
+// rigid_ops.hpp and motor.hpp.
 #include <span>
 
 #include <rotorcert/reference/motor.hpp>
@@ -28,6 +29,30 @@ Outputs dq_compose(const Inputs& in) { return dq_result(clause::DQ_2_compose(in.
 Outputs dq_apply_point(const Inputs& in) { return point_result(clause::DQ_3_apply_point(in.dq("d"), in.vec3("p"))); }
 Outputs dq_normalize(const Inputs& in) { return dq_result(clause::DQ_4_normalize(in.dq("d"))); }
 Outputs dq_sclerp(const Inputs& in) { return dq_result(clause::DQ_5_sclerp(in.dq("a"), in.dq("b"), in.scalar("t"))); }
+
+Outputs rotation_translation_result(const ref::Result<ref::RotationTranslation<Real>>& r) {
+  return with_status(r).quat("q", r.value.q).vec3("t", r.value.t);
+}
+Outputs dq_to_rt(const Inputs& in) { return rotation_translation_result(clause::DQ_7_to_rotation_translation(in.dq("d"))); }
+
+/// DQ-8, DQ-9: the dual vector xi = [xi_r, xi_d] (LAYOUT-1, 6 scalars).
+Outputs dq_log(const Inputs& in) {
+  const auto r = clause::DQ_8_log(in.dq("d"));
+  const V3& a = r.value.real;
+  const V3& b = r.value.dual;
+  return with_status(r).array("xi", {a[0], a[1], a[2], b[0], b[1], b[2]});
+}
+Outputs dq_exp(const Inputs& in) {
+  const std::vector<Real> xi = in.scalars("xi");
+  if (xi.size() != 6) in.fail("xi", "a dual vector has 6 components [xi_r, xi_d]");
+  return dq_result(clause::DQ_9_exp(ref::DualVector<Real>{{xi[0], xi[1], xi[2]}, {xi[3], xi[4], xi[5]}}));
+}
+
+Outputs rigid_compose(const Inputs& in) {
+  return rotation_translation_result(clause::RIGID_1_compose(in.quat("qa"), in.vec3("ta"), in.quat("qb"), in.vec3("tb")));
+}
+Outputs rigid_apply(const Inputs& in) { return point_result(clause::RIGID_2_apply(in.quat("q"), in.vec3("t"), in.vec3("p"))); }
+Outputs rigid_inverse(const Inputs& in) { return rotation_translation_result(clause::RIGID_3_inverse(in.quat("q"), in.vec3("t"))); }
 
 template <class Blend>
 Handler blend(Blend f) {
@@ -69,6 +94,12 @@ void register_rigid_ops(OpTable& table) {
   table["dq_apply_point"] = dq_apply_point;
   table["dq_normalize"] = dq_normalize;
   table["dq_sclerp"] = dq_sclerp;
+  table["dq_to_rt"] = dq_to_rt;
+  table["dq_log"] = dq_log;
+  table["dq_exp"] = dq_exp;
+  table["rigid_compose"] = rigid_compose;
+  table["rigid_apply"] = rigid_apply;
+  table["rigid_inverse"] = rigid_inverse;
   table["dq_dlb"] = blend([](DSpan d, RSpan w) { return clause::DQ_6_dlb<Real>(d, w); });
   table["motor_from_dq"] = motor_from_dq;
   table["motor_apply_point"] = motor_apply_point;

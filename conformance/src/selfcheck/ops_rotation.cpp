@@ -89,6 +89,16 @@ Outputs to_axis_angle(const Inputs& in) {
   const auto r = clause::AXANG_1_to_axis_angle(in.quat("q"));
   return with_status(r).scalar("theta", r.value.angle).vec3("axis", r.value.axis);
 }
+/// AXANG-3 and AXANG-4: AXANG-1's angle alone, its axis alone.
+Outputs to_angle(const Inputs& in) {
+  const auto r = clause::AXANG_1_to_axis_angle(in.quat("q"));
+  return with_status(r).scalar("theta", r.value.angle);
+}
+Outputs to_axis(const Inputs& in) {
+  const auto r = clause::AXANG_1_to_axis_angle(in.quat("q"));
+  return with_status(r).vec3("axis", r.value.axis);
+}
+Outputs sqrt(const Inputs& in) { return quat_result(clause::SQRT_1_sqrt(in.quat("q"))); }
 Outputs from_axis_angle(const Inputs& in) {
   return quat_result(clause::AXANG_2_from_axis_angle(in.scalar("theta"), in.vec3("axis")));
 }
@@ -155,6 +165,9 @@ void register_rotation_ops(OpTable& table) {
   table["to_matrix"] = to_matrix;
   table["from_matrix"] = from_matrix;
   table["to_axis_angle"] = to_axis_angle;
+  table["to_angle"] = to_angle;
+  table["to_axis"] = to_axis;
+  table["sqrt"] = sqrt;
   table["from_axis_angle"] = from_axis_angle;
   table["log"] = log;
   table["exp"] = exp;
