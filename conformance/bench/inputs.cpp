@@ -18,6 +18,7 @@
 //   weights       k values uniform in [0.05, 1] divided by their sum
 #include "inputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -150,6 +151,14 @@ void fill_inputs(const OpSpec& op, std::size_t n, std::size_t k, S* const* in) {
             break;
           }
           case Gen::weights: e[0] = draw.uniform(0.05, 1); break;
+          case Gen::dual_vec: {
+            const Vec3 u = draw.unit_axis();
+            const double half = draw.uniform(0, std::numbers::pi) / 2;
+            const Vec3 d = draw.point();
+            const double xi[6] = {half * u.x, half * u.y, half * u.z, d.x / 2, d.y / 2, d.z / 2};
+            std::copy(xi, xi + 6, e);
+            break;
+          }
         }
       }
       if (a.gen == Gen::weights) {

@@ -91,7 +91,20 @@ constexpr double flops_per_element(OpId id, std::size_t k_influences) {
       // DQ-1 per influence, DLB (DQ-6), DQ-3 on the unit result
       return k * dq_from_rt + (dot4 * (k - 1) + 8 * k + 8 * (k - 1) + dq_normalize) +
              (dq_translation + rotate + 3);
-    default: break;  // not timed (ABI version 3 and 4 ops)
+    case OpId::to_angle: return norm3 + T + 1;                                 // AXANG-3: 2 atan2(|v|, w)
+    case OpId::to_axis: return norm3 + 1 + 3;                                  // AXANG-4: v/|v|
+    case OpId::sqrt: return 1 + normalize4;                                    // SQRT-1: (1 + w, v) normalised
+    case OpId::dq_to_rotation_translation: return dq_translation;              // DQ-7 on a unit input
+    case OpId::dq_log:                                                         // DQ-8 on a unit input
+      // |r_v|, atan2, n = r_v/|r_v|, d_v . n, a, d_perp, b/|r_v|, b n and a n + k d_perp
+      return norm3 + T + 3 + dot3 + 3 + 6 + 1 + 3 + 9;
+    case OpId::dq_exp:                                                         // DQ-9
+      // b = |xi_r|, n, a = xi_d . n, xi_perp, cos, sin, sin b / b, real (3), dual (1 + 3 x 4)
+      return norm3 + 3 + dot3 + 6 + 2 * T + 1 + 3 + 13;
+    case OpId::rigid_compose: return hamilton + rotate + 3;                    // RIGID-1
+    case OpId::rigid_apply: return rotate + 3;                                 // RIGID-2
+    case OpId::rigid_inverse: return rotate;                                   // RIGID-3: q*, -R^-1 t
+    default: break;
   }
   return 0;
 }

@@ -1,5 +1,5 @@
-// The operations of the implementation ABI as the benchmarks see them: for each op the benchmarks
-// time (those of rc_ops, ABI version 1), how each input array is filled (Gen, see inputs.hpp).
+// The operations of the implementation ABI as the benchmarks see them: for each op (every ABI
+// version's), how each input array is filled (Gen, see inputs.hpp).
 // The op's identity and array counts come from the op list (abi_op_list.h, rotorcert/op_id.hpp);
 // op_cost.hpp adds the cost model, op_call.hpp the call.
 #pragma once
@@ -33,6 +33,7 @@ enum class Gen {
   cluster_quat,  // k influences: rotations within kNeighbourAngle of one random rotation
   cluster_dq,    // k influences: cluster_quat rotations with translations in [-1, 1]^3
   weights,       // k weights in [0.05, 1], scaled to sum to 1
+  dual_vec,      // a motor log [xi_r, xi_d]: xi_r as log_vec, xi_d in [-1, 1]^3 (half a translation)
 };
 
 struct ArraySpec {
@@ -66,8 +67,8 @@ constexpr OpSpec spec(OpId id, std::array<ArraySpec, kMaxInputs> in, std::array<
 }
 }  // namespace detail
 
-/// The ops of rc_ops (ABI version 1), in its order: entry i is OpId i.
-inline constexpr std::size_t kTimedOpCount = 25;
+/// Every op of the op list, in its order: entry i is OpId i.
+inline constexpr std::size_t kTimedOpCount = rotorcert::kOpCount;
 inline constexpr std::array<OpSpec, kTimedOpCount> kTimedOps = [] {
   using namespace detail;
   using G = Gen;
@@ -101,14 +102,24 @@ inline constexpr std::array<OpSpec, kTimedOpCount> kTimedOps = [] {
            {I("c", 3, G::point), I("u", 3, G::unit_axis), I("angle", 1, G::angle), I("p", 3, G::point)}, {out_p}),
       spec(OpId::skin_linear, {skin_q, skin_t, skin_w, I("v", 3, G::point)}, {out_v}),
       spec(OpId::skin_dual_quaternion, {skin_q, skin_t, skin_w, I("v", 3, G::point)}, {out_v}),
+      // ABI version 3
+      spec(OpId::to_angle, {q}, {O("out_angle", 1)}),
+      spec(OpId::to_axis, {q}, {O("out_axis", 3)}),
+      spec(OpId::sqrt, {q}, {out_q}),
+      spec(OpId::dq_to_rotation_translation, {I("d", 8, G::unit_dq)}, {out_q, O("out_t", 3)}),
+      // ABI version 4
+      spec(OpId::dq_log, {I("d", 8, G::unit_dq)}, {O("out_xi", 6)}),
+      spec(OpId::dq_exp, {I("xi", 6, G::dual_vec)}, {out_d}),
+      spec(OpId::rigid_compose,
+           {I("qa", 4, G::unit_quat), I("ta", 3, G::point), I("qb", 4, G::unit_quat), I("tb", 3, G::point)},
+           {out_q, O("out_t", 3)}),
+      spec(OpId::rigid_apply, {q, I("t", 3, G::point), I("p", 3, G::point)}, {out_p}),
+      spec(OpId::rigid_inverse, {q, I("t", 3, G::point)}, {out_q, O("out_t", 3)}),
   }};
 }();
 
-// Every op of rc_ops has its entry, in order, and every array the list gives has a spec.
+// Every op of the op list has its entry, in order, and every array the list gives has a spec.
 static_assert([] {
-  std::size_t since1 = 0;
-  for (const OpInfo& row : rotorcert::kOps) since1 += row.since == 1;
-  if (since1 != kTimedOpCount) return false;
   for (std::size_t i = 0; i < kTimedOpCount; ++i) {
     const OpSpec& o = kTimedOps[i];
     if (op_index(o.id) != i || o.n_in > kMaxInputs || o.n_out > kMaxOutputs) return false;
@@ -118,7 +129,7 @@ static_assert([] {
       if (o.out[j].stride == 0) return false;
   }
   return true;
-}(), "kTimedOps must hold rc_ops' ops in the op list's order, every array specified");
+}(), "kTimedOps must hold every op in the op list's order, every array specified");
 
 constexpr const OpSpec& op_spec(OpId id) { return kTimedOps[op_index(id)]; }
 
