@@ -864,3 +864,75 @@ TEST(Engine, AVersion2TableLoadsWithoutTheVersion3Ops) {
   EXPECT_EQ(ri::entry<V3Ops<V3Impl::right>>(1, 0)->abi_version, 1u);
   EXPECT_EQ(ri::entry<V3Ops<V3Impl::right>>(RC_ABI_VERSION + 1, 0), nullptr);
 }
+
+namespace {
+
+/// slerp as nalgebra's sclerp treats a half turn: refused (DOMAIN_ERROR) where the two rotations are
+/// 180 degrees apart, the textbook slerp elsewhere. Declared = true declares the refusal (DECL-1
+/// not_half_turn_apart), as a library that documents it may.
+template <bool Declared>
+struct RefusesHalfTurns : SignedSlerp<false> {
+  static constexpr const char* const preconditions[] = {Declared ? "slerp:not_half_turn_apart" : nullptr, nullptr};
+  static ri::Status slerp(const Q& a, const Q& b, const double& t, Q& out) {
+    if (std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]) <= 1e-12) return ri::Status::domain_error;
+    return SignedSlerp<false>::slerp(a, b, t, out);
+  }
+};
+
+}  // namespace
+
+TEST(Engine, ADocumentedRefusalOfAHalfTurnIsNotADefect) {
+  RC_CLAUSE("DECL-1");
+  RC_CLAUSE("EDGE-3");
+  // Undeclared, refusing EDGE-3's tie is a wrong status: FAIL.
+  const auto undeclared = run(ri::table<RefusesHalfTurns<false>>(), "EDGE-3");
+  EXPECT_EQ(undeclared.outcome, engine::Outcome::fail) << undeclared.note;
+  // Declared, the ties are outside the precondition: not judged, and the Robust clause is
+  // NOT_SUPPORTED (not met, but no defect), saying why.
+  const auto declared = run(ri::table<RefusesHalfTurns<true>>(), "EDGE-3");
+  EXPECT_EQ(declared.outcome, engine::Outcome::not_supported) << declared.note;
+  ASSERT_EQ(declared.excluded.count("not_half_turn_apart"), 1u);
+  EXPECT_GT(declared.excluded.at("not_half_turn_apart"), 0u);
+}
+
+// An oriented nlerp (no hemisphere flip, declared) near an antipode: the chord (1 - t) a + t b is
+// short and its rounding moves the direction by about u / |s|. ACC-1 oriented measures the error
+// times |s|: the textbook formula's rounding is ACCEPTABLE, another rotation is not.
+TEST(Engine, AnOrientedChordNearAnAntipodeIsJudgedByItsCondition) {
+  RC_CLAUSE("ACC-1");
+  RC_CLAUSE("NLERP-1");
+  const engine::AbiOp* op = engine::find_abi_op("nlerp");
+  ASSERT_NE(op, nullptr);
+  const spec::ToleranceClass& tc = the_spec().lookup(the_spec().find_clause("NLERP-1")->tolerance);
+  // The input nalgebra's nlerp met in EDGE-3: b = -a, t just above 1/2.
+  const double a[4] = {0x1.84093368cf5f2p-2, -0x1.397fa5980563cp-1, -0x1.ae9049868e252p-3, -0x1.529337bec0ef3p-1};
+  const double t = 0x1.004baae113429p-1;
+  engine::Case c;
+  c.inputs = {{a[0], a[1], a[2], a[3]}, {-a[0], -a[1], -a[2], -a[3]}, {t}};
+  c.label = "exact antipode, t near 1/2";
+  double s[4], n2 = 0;
+  for (int i = 0; i < 4; ++i) {
+    s[i] = (1 - t) * a[i] + t * -a[i];
+    n2 += s[i] * s[i];
+  }
+  double got[4];
+  engine::Observed textbook;
+  textbook.outputs.resize(1);
+  for (int i = 0; i < 4; ++i) textbook.outputs[0].push_back(got[i] = s[i] / std::sqrt(n2));
+  const engine::Declarations oriented{{}, {"nlerp:oriented"}};
+  const engine::CaseVerdict v = engine::judge_case(*op, tc, c, textbook, ref::Format::binary64, nullptr, &oriented);
+  EXPECT_EQ(v.verdict, ref::Verdict::pass) << v.error << " " << v.detail;
+  EXPECT_EQ(v.grade, engine::Grade::acceptable);
+  EXPECT_EQ(v.convention, "oriented");
+  // The unscaled error is beyond the loose bar (what the convention measured before it scaled).
+  // (the angle between got and -a, by the chord: 2 asin(|got - (-a)| / 2), radians)
+  double d2 = 0;
+  for (int i = 0; i < 4; ++i) d2 += (got[i] + a[i]) * (got[i] + a[i]);
+  const double err = 4 * std::asin(std::sqrt(d2) / 2);
+  ASSERT_TRUE(tc.loose_value().has_value());
+  EXPECT_GT(err, tc.loose_value()->toDouble() * std::numeric_limits<double>::epsilon()) << "the case must need the scaling";
+  // A different rotation is a defect however short the chord.
+  engine::Observed wrong;
+  wrong.outputs = {{engine::Real(0), engine::Real(0), engine::Real(0), engine::Real(1)}};
+  EXPECT_EQ(engine::judge_case(*op, tc, c, wrong, ref::Format::binary64, nullptr, &oriented).verdict, ref::Verdict::fail);
+}

@@ -348,6 +348,18 @@ std::vector<Precondition> build_preconditions() {
                    for (int i = 0; i < 4; ++i) d += c.inputs[0][i] * c.inputs[1][i];
                    return d >= 0;
                  }});
+  // EDGE-3's tie (|a.b| <= 8 eps |a| |b|, the real parts for dq_sclerp): the plane of the
+  // interpolation is not determined there, and a library may document that it refuses it
+  // (nalgebra's sclerp panics "if the angle between both quaternion is 180 degrees").
+  all.push_back({"not_half_turn_apart", "the two rotations of an interpolation are not a half turn apart: |a.b| > 8 eps |a| |b|",
+                 [](const AbiOp& op) { return is_interpolation(op); },
+                 [](const AbiOp&, const Case& c, ref::Format f) {
+                   if (!all_finite(c)) return false;
+                   Real d(0);
+                   for (int i = 0; i < 4; ++i) d += c.inputs[0][i] * c.inputs[1][i];
+                   return abs(d) > Real(8) * ref::format_epsilon<Real>(f) * block_norm(c.inputs[0], 0, 4) *
+                                       block_norm(c.inputs[1], 0, 4);
+                 }});
   return all;
 }
 
@@ -566,15 +578,20 @@ std::vector<AcceptableConvention> build_conventions() {
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
                    if (!all_finite(c) || !hemisphere_rule_flips_b(c)) return std::nullopt;
                    const Quat a = unit(quat(c.inputs[0])), b = unit(quat(c.inputs[1]));
-                   if (ref::dot(a, b) <= Real(-1)) return std::nullopt;  // antipodes: no oriented arc
                    const Real t = c.inputs[2][0];
-                   const Quat other =
-                       op.name == "slerp"
-                           ? clause::detail::quaternion(clause::detail::rotor_interpolation(
-                                 clause::detail::rotor(a), clause::detail::rotor(b), t, false))
-                           : ref::normalized(Quat{(Real(1) - t) * a.w + t * b.w, (Real(1) - t) * a.x + t * b.x,
-                                                  (Real(1) - t) * a.y + t * b.y, (Real(1) - t) * a.z + t * b.z});
-                   return unit_rotation_error(got[0], other);
+                   if (op.name == "slerp") {
+                     if (ref::dot(a, b) <= Real(-1)) return std::nullopt;  // antipodes: no oriented arc
+                     return unit_rotation_error(got[0], clause::detail::quaternion(clause::detail::rotor_interpolation(
+                                                            clause::detail::rotor(a), clause::detail::rotor(b), t, false)));
+                   }
+                   // nlerp: the chord s = (1 - t) a + t b, defined unless s = 0. Near an antipode it is
+                   // ill-conditioned: rounding the sum moves its direction by about u / |s|, so the
+                   // error counts times min(1, |s|) (ACC-1 oriented; DQ-8 scales by its condition too).
+                   const Quat s{(Real(1) - t) * a.w + t * b.w, (Real(1) - t) * a.x + t * b.x,
+                                (Real(1) - t) * a.y + t * b.y, (Real(1) - t) * a.z + t * b.z};
+                   const Real length = ref::norm(s);
+                   if (length == 0) return std::nullopt;
+                   return unit_rotation_error(got[0], ref::normalized(s)) * std::min(Real(1), length);
                  }});
 
   // EDGE-6: a zero quaternion, zero dual real part or zero axis has no rotation; the spec answers

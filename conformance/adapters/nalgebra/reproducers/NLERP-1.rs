@@ -4,8 +4,8 @@
 //! a.b < 0, so the sum never vanishes. UnitQuaternion::nlerp (src/geometry/quaternion.rs:1192-1197)
 //! is documented as lerp then normalize, lerp = "self * (1 - t) + other * t" (:1162-1175), with no
 //! hemisphere flip (declared nlerp:oriented, ACC-1: the long arc is accepted where the table
-//! declares it, but an exact antipode stays undefined, hence FAIL). q and -q are the same rotation,
-//! and nlerp(q, -q, 1/2) is 0/0: NaN; near it the sum cancels (hundreds of eps at t = 0.5006).
+//! declares it, its error measured times the chord's length |s|, but s = 0 stays undefined, hence
+//! FAIL). q and -q are the same rotation, and nlerp(q, -q, 1/2) is 0/0: NaN.
 //! UnitQuaternion::slerp of the same pair flips and returns q.
 //! Upstream: no matching issue found in dimforge/nalgebra.
 //! Run: cargo run --release --manifest-path conformance/adapters/nalgebra/Cargo.toml
@@ -30,21 +30,6 @@ fn main() {
     println!("library: {}   (slerp of the same pair: {})", hxs(&got), hxs(&[s.i, s.j, s.k, s.w]));
     println!("correct: [0x0p+0, 0x0p+0, 0x0p+0, 0x1p+0] (b' = -b = a, the interpolation is constant)");
 
-    // The suite's exact-antipode input with t near 1/2 (EDGE-3): cancellation, the same rotation inaccurately.
-    let a = [hexf("0x1.84093368cf5f2p-2"), hexf("-0x1.397fa5980563cp-1"), hexf("-0x1.ae9049868e252p-3"), hexf("-0x1.529337bec0ef3p-1")];
-    let b: Vec<f64> = a.iter().map(|x| -x).collect();
-    let t = hexf("0x1.004baae113429p-1");
-    let ua = UnitQuaternion::from_quaternion(Quaternion::new(a[3], a[0], a[1], a[2]));
-    let ub = UnitQuaternion::from_quaternion(Quaternion::new(b[3], b[0], b[1], b[2]));
-    let r = ua.nlerp(&ub, t);
-    let got = [r.i, r.j, r.k, r.w];
-    let want = [ua.i, ua.j, ua.k, ua.w];
-    let err = metric1(&got, &want) / f64::EPSILON;
-    shown |= err > 256.0;
-    println!("input:   a = {}, b = -a, t = {}", hxs(&a), hx(t));
-    println!("library: {} {}", hxs(&got), dec(&got));
-    println!("correct: a (up to sign) = {}", hxs(&want));
-    println!("error:   {err:.3e} eps (METRIC-1; eps = 2^-52; loose bar 256 eps)");
     println!("{}", if shown { "DEFECT SHOWN" } else { "DEFECT NOT SHOWN" });
     std::process::exit(if shown { 0 } else { 1 });
 }

@@ -39,12 +39,13 @@ static CLAUSES: StrList<42> = str_list![
 ];
 
 /// DECL-1, nalgebra's documentation (citations in adapter.json).
-static PRECONDITIONS: StrList<6> = str_list![
+static PRECONDITIONS: StrList<7> = str_list![
     "from_axis_angle:unit_axis",
     "rotate_about_axis:unit_axis",
     "from_matrix:rotation_matrix",
     "slerp:t_in_unit_interval",
     "dq_sclerp:t_in_unit_interval",
+    "dq_sclerp:not_half_turn_apart",
 ];
 
 /// Conventions nalgebra chose where the spec allows several answers (citations in adapter.json).
