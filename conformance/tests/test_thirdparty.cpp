@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include <rotorcert/report/render.hpp>
 #include <rotorcert/testing/clause.hpp>
 #include <rotorcert/thirdparty/thirdparty.hpp>
 
@@ -121,6 +124,67 @@ TEST(ThirdParty, ListedDefectIsAsExpected) {
   ASSERT_EQ(lib.at("defects").size(), 1u);
   EXPECT_TRUE(lib.at("defects").at(0).at("known").get<bool>());
   EXPECT_EQ(lib.at("defects").at(0).at("why"), "b a");
+}
+
+TEST(ThirdParty, ListedDefectCarriesWhatTheLibrarysTrackerSays) {
+  RC_CLAUSE("REPORT-3");
+  const json upstream = {{"status", "reported"},
+                         {"refs", {"https://github.com/example/example/issues/1"}},
+                         {"note", "open: compose in the wrong order"},
+                         {"searched", "2026-11-27"}};
+  Fixture f("upstream", {"python3", kExample, "--bug"},
+            json::array({{{"table", "python_example_bug"}, {"scalar", "double"}, {"clause", "COMPOSE-1"}, {"why", "b a"},
+                          {"upstream", upstream}}}));
+  const json lib = f.library();
+  ASSERT_EQ(lib.at("status"), "certified") << lib.at("reason");
+  ASSERT_EQ(lib.at("defects").size(), 1u);
+  EXPECT_EQ(lib.at("defects").at(0).at("upstream"), upstream);
+  // The report shows it beside the defect, in both renderings (as text: the page links nothing).
+  const json report = {{"sections", {{"third_party", {{"libraries", json::array({lib})}}}}}};
+  for (const std::string& page : {report::render_html(report), report::render_markdown(report)}) {
+    EXPECT_NE(page.find("https://github.com/example/example/issues/1"), std::string::npos);
+    EXPECT_NE(page.find("reported"), std::string::npos);
+  }
+}
+
+TEST(ThirdParty, AnUpstreamFieldSaysWhatIsWrongWithIt) {
+  RC_CLAUSE("REPORT-3");
+  const json good = {{"status", "not found"}, {"refs", json::array()}, {"note", "searched x"}, {"searched", "2026-11-27"}};
+  EXPECT_EQ(thirdparty::parse_upstream(good).status, thirdparty::Upstream::Status::not_found);
+  const auto with = [&](const char* key, const json& value) {
+    json j = good;
+    j[key] = value;
+    return j;
+  };
+  for (const json& bad : {with("status", "known"), with("refs", json::array({"http://example.org"})),
+                          with("status", "reported"), with("searched", "yesterday"), with("note", ""),
+                          with("link", "x")})
+    EXPECT_THROW(thirdparty::parse_upstream(bad), std::invalid_argument) << bad.dump();
+}
+
+// REPORT-3: every listed defect of a third-party library has been searched for in its tracker, and
+// every "upstream" in the checkout is well formed (the entries the report shows).
+TEST(ThirdParty, EveryListedDefectOfTheCheckoutSaysWhatItsTrackerKnows) {
+  RC_CLAUSE("REPORT-3");
+  const fs::path src(ROTORCERT_SOURCE_DIR);
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(src / "conformance/adapters"))
+    if (fs::exists(e.path() / "expected_failures.json")) files.push_back(e.path() / "expected_failures.json");
+  files.push_back(src / "impls/glm_quat/expected_failures.json");
+  files.push_back(src / "impls/eigen_quat/expected_failures.json");
+  ASSERT_GE(files.size(), 18u);
+  std::size_t entries = 0;
+  for (const fs::path& file : files) {
+    std::ifstream in(file);
+    const json listed = json::parse(in);
+    for (const json& f : listed.at("failures")) {
+      ++entries;
+      const std::string where = file.string() + ": " + f.value("scalar", "") + " " + f.value("clause", "");
+      ASSERT_TRUE(f.contains("upstream")) << where << " was not searched for in the library's tracker";
+      EXPECT_NO_THROW(thirdparty::parse_upstream(f.at("upstream"))) << where;
+    }
+  }
+  EXPECT_GT(entries, 100u);
 }
 
 TEST(ThirdParty, ListedDefectThatPassesIsNews) {

@@ -16,6 +16,32 @@ namespace rotorcert::report::detail {
 namespace {
 /// The standalone reproducer of a defect (REPORT-3): its file, language and the command that runs
 /// it against the unmodified library.
+/// The library's tracker on a listed defect: "reported" with its threads, "not found" (searched,
+/// none), "declined" (maintainers call it intended); "not searched" when the entry has no
+/// "upstream". Threads as text, not links: the report links nothing outside itself.
+std::string upstream_text(const json& defect) {
+  if (!defect.contains("upstream") || !defect["upstream"].is_object()) return "not searched";
+  const json& u = defect["upstream"];
+  std::string t = str(u, "status");
+  std::vector<std::string> refs;
+  for (const json& r : arr(u, "refs"))
+    if (r.is_string()) refs.push_back(r.get<std::string>());
+  if (!refs.empty()) t += ": " + join(refs, ", ");
+  if (!str(u, "searched").empty()) t += " (searched " + str(u, "searched") + ")";
+  return t;
+}
+
+std::string upstream_html(const json& defect) {
+  if (!defect.contains("upstream") || !defect["upstream"].is_object()) return "<span class=\"muted\">not searched</span>";
+  const json& u = defect["upstream"];
+  std::string h = "<strong>" + esc(str(u, "status")) + "</strong>";
+  for (const json& r : arr(u, "refs"))
+    if (r.is_string()) h += "<div><code>" + esc(r.get<std::string>()) + "</code></div>";
+  if (!str(u, "note").empty()) h += "<div class=\"note\">" + esc(str(u, "note")) + "</div>";
+  if (!str(u, "searched").empty()) h += "<div class=\"muted\">searched " + esc(str(u, "searched")) + "</div>";
+  return h;
+}
+
 std::string reproducer_html(const json& defect) {
   if (!defect.contains("reproducer") || !defect["reproducer"].is_object())
     return "<strong class=\"no\">none</strong>";
@@ -240,7 +266,7 @@ void render_third_party_html(std::ostream& out, const json& section) {
     out << "<p class=\"muted\">None found.</p>\n";
   } else {
     out << "<div class=\"scroll\">\n<table class=\"third-party-defects\">\n<thead><tr><th>Library</th><th>Clause</th><th>Outcome</th>"
-           "<th>Worst input (hexfloat)</th><th>Error</th><th>What</th><th>Known defect</th><th>Reproducer (the library's own language)</th><th>Reproduce the certificate</th></tr></thead>\n<tbody>\n";
+           "<th>Worst input (hexfloat)</th><th>Error</th><th>What</th><th>Known defect</th><th>The library's tracker</th><th>Reproducer (the library's own language)</th><th>Reproduce the certificate</th></tr></thead>\n<tbody>\n";
     for (const json& lib : arr(section, "libraries"))
       for (const json& d : arr(lib, "defects")) {
         const json& worst = d.contains("worst") ? d["worst"] : json();
@@ -251,7 +277,7 @@ void render_third_party_html(std::ostream& out, const json& section) {
             << esc(error_eps_text(worst.is_object() && worst.contains("error_eps") ? worst["error_eps"] : json())) << " " << kEps
             << "</td><td>" << esc(worst_text(worst)) << (str(worst, "detail").empty() ? "" : ": " + esc(str(worst, "detail")))
             << "</td><td>" << (str(d, "known") == "true" ? esc(str(d, "why")) : "<strong class=\"no\">not listed</strong>")
-            << "</td><td>" << reproducer_html(d) << "</td><td><code>" << esc(str(d, "reproduce")) << "</code></td></tr>\n";
+            << "</td><td>" << (str(d, "known") == "true" ? upstream_html(d) : "") << "</td><td>" << reproducer_html(d) << "</td><td><code>" << esc(str(d, "reproduce")) << "</code></td></tr>\n";
       }
     out << "</tbody>\n</table>\n</div>\n";
   }
@@ -319,14 +345,15 @@ void render_third_party_markdown(std::ostream& out, const json& section) {
   for (const json& lib : arr(section, "libraries"))
     for (const json& d : arr(lib, "defects")) {
       if (!any)
-        header(out, {"library", "clause", "outcome", "worst input", "error (eps)", "what", "known defect", "reproducer",
-                     "reproduce the certificate"});
+        header(out, {"library", "clause", "outcome", "worst input", "error (eps)", "what", "known defect",
+                     "the library's tracker", "reproducer", "reproduce the certificate"});
       any = true;
       const json& worst = d.contains("worst") ? d["worst"] : json();
       row(out, {cell(str(lib, "name") + " " + str(d, "scalar")), code(str(d, "clause")), str(d, "outcome"), code(str(worst, "input")),
                 error_eps_text(worst.is_object() && worst.contains("error_eps") ? worst["error_eps"] : json()),
                 cell(worst_text(worst) + (str(worst, "detail").empty() ? "" : ": " + str(worst, "detail"))),
                 cell(str(d, "known") == "true" ? str(d, "why") : "NOT LISTED"),
+                cell(str(d, "known") == "true" ? upstream_text(d) : ""),
                 d.contains("reproducer") && d["reproducer"].is_object()
                     ? cell(str(d["reproducer"], "language") + ": ") + code(str(d["reproducer"], "run"))
                     : "none",

@@ -65,7 +65,7 @@ std::set<std::string> intermittent_defects(const std::vector<json>& listed) {
 void add_defects(Library& lib, const certify::Certificate& cert) {
   for (const engine::ClauseResult& r : cert.clauses) {
     if (!certify::claimed(cert, r.clause) || !certify::is_defect(r.outcome)) continue;
-    Defect d{cert.table.scalar, r, std::nullopt, "", std::nullopt};
+    Defect d{cert.table.scalar, r, std::nullopt, "", std::nullopt, std::nullopt};
     if (const std::string* why = certify::expected_failure(cert, r.clause)) d.why = *why;
     if (const auto rp = cert.reproduce.find(r.clause); rp != cert.reproduce.end()) d.reproduce = rp->second;
     lib.defects.push_back(std::move(d));
@@ -137,12 +137,28 @@ void attach_reproducers(Library& lib, const std::vector<json>& listed) {
   }
 }
 
-/// A library whose certificates are all in: its verdict and its defects' reproducers, from one
-/// reading of its expected_failures.json.
+/// REPORT-3: what the library's tracker knows of each listed defect (the entry's "upstream").
+void attach_upstream(Library& lib, const std::vector<json>& listed) {
+  for (Defect& d : lib.defects) {
+    d.upstream.reset();
+    for (const json& f : listed)
+      if (f.value("scalar", "") == d.scalar && f.value("clause", "") == d.result.clause && f.contains("upstream"))
+        d.upstream = parse_upstream(f.at("upstream"));
+  }
+}
+
+/// A library whose certificates are all in: its verdict and its defects' reproducers and
+/// upstream status, from one reading of its expected_failures.json.
 void conclude(Library& lib, int cases_per_family) {
   const std::vector<json> listed = listed_failures(lib.manifest);
   finish(lib, cases_per_family, intermittent_defects(listed));
   attach_reproducers(lib, listed);
+  attach_upstream(lib, listed);
+}
+
+json upstream_json(const std::optional<Upstream>& u) {
+  if (!u) return nullptr;
+  return {{"status", to_string(u->status)}, {"refs", u->refs}, {"note", u->note}, {"searched", u->searched}};
 }
 
 json defect_json(const Defect& d) {
@@ -161,7 +177,8 @@ json defect_json(const Defect& d) {
           {"conventions", d.result.conventions},
           {"note", d.result.note},
           {"reproduce", d.reproduce},
-          {"reproducer", reproducer}};
+          {"reproducer", reproducer},
+          {"upstream", upstream_json(d.upstream)}};
 }
 
 /// One library of the section: its manifest, flattened, and what the run made of it.
@@ -432,6 +449,42 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
     }
   }
   return {std::move(libs)};
+}
+
+const char* to_string(Upstream::Status s) {
+  switch (s) {
+    case Upstream::Status::reported: return "reported";
+    case Upstream::Status::not_found: return "not found";
+    case Upstream::Status::declined: return "declined";
+  }
+  return "not found";
+}
+
+Upstream parse_upstream(const json& j) {
+  const auto fail = [](const std::string& what) { throw std::invalid_argument("upstream: " + what); };
+  if (!j.is_object()) fail("not an object");
+  for (const auto& [key, value] : j.items())
+    if (key != "status" && key != "refs" && key != "note" && key != "searched") fail("unknown field \"" + key + "\"");
+  Upstream u;
+  const std::string status = j.value("status", "");
+  if (status == "reported") u.status = Upstream::Status::reported;
+  else if (status == "not found") u.status = Upstream::Status::not_found;
+  else if (status == "declined") u.status = Upstream::Status::declined;
+  else fail("status \"" + status + "\" is none of reported, not found, declined");
+  if (!j.contains("refs") || !j.at("refs").is_array()) fail("refs is not an array");
+  for (const json& r : j.at("refs")) {
+    if (!r.is_string() || r.get<std::string>().rfind("https://", 0) != 0) fail("a ref is not an https URL: " + r.dump());
+    u.refs.push_back(r.get<std::string>());
+  }
+  if (u.status != Upstream::Status::not_found && u.refs.empty()) fail("status \"" + status + "\" names no thread");
+  u.note = j.value("note", "");
+  if (u.note.empty()) fail("no note (what the threads say, or what was searched)");
+  u.searched = j.value("searched", "");
+  const std::string& d = u.searched;
+  const bool date = d.size() == 10 && d[4] == '-' && d[7] == '-' &&
+                    std::all_of(d.begin(), d.end(), [](char c) { return c == '-' || (c >= '0' && c <= '9'); });
+  if (!date) fail("searched \"" + d + "\" is not a date YYYY-MM-DD");
+  return u;
 }
 
 const char* to_string(LibraryStatus s) {

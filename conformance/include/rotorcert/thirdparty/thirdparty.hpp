@@ -55,6 +55,20 @@ struct Reproducer {
   std::string run, ctest;
 };
 
+/// What the library's own issue tracker says of a listed defect (the "upstream" field of an
+/// expected_failures.json entry, REPORT-3): whether a thread describes it, and where.
+struct Upstream {
+  enum class Status { reported, not_found, declined };
+  Status status = Status::not_found;
+  std::vector<std::string> refs;  // issue / pull request URLs
+  std::string note;               // what the threads say, or what was searched
+  std::string searched;           // the date of the search, YYYY-MM-DD
+};
+const char* to_string(Upstream::Status s);  // "reported", "not found", "declined"
+/// The "upstream" object of an expected_failures.json entry; std::invalid_argument saying what is
+/// wrong when it is malformed (the adapter test reads every entry through this).
+Upstream parse_upstream(const nlohmann::json& j);
+
 /// A claimed clause of a library that FAILed, crashed or hung: known when its expected_failures.json
 /// lists it (why), a surprise otherwise.
 struct Defect {
@@ -63,6 +77,7 @@ struct Defect {
   std::optional<std::string> why;  // the listed reason; empty optional: not listed
   std::string reproduce;           // the rotorcert command
   std::optional<Reproducer> reproducer;
+  std::optional<Upstream> upstream;  // listed and searched for in the library's tracker
 };
 
 /// A listed defect whose clause did not FAIL in this run.
