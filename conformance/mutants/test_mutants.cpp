@@ -79,8 +79,9 @@ TEST(Mutants, EveryMutantIsKilledByEveryClauseItBreaks) {
       EXPECT_TRUE(r.outcome == engine::Outcome::pass || r.outcome == engine::Outcome::quality_warning)
           << m.name << " is graded " << engine::to_string(r.outcome) << " on " << clause << ", not ACCEPTABLE: "
           << r.worst_input << " -> " << r.worst_detail;
+      const std::string& expected = convention;  // clang 14 cannot capture a structured binding
       const bool named = std::any_of(r.acceptable.begin(), r.acceptable.end(),
-                                     [&](const engine::ClauseResult::Acceptable& a) { return a.convention == convention; });
+                                     [&](const engine::ClauseResult::Acceptable& a) { return a.convention == expected; });
       EXPECT_TRUE(named) << m.name << " on " << clause << ": the convention " << convention << " is not named";
       std::printf("%-28s %-10s %-15s accepted as %s\n", m.name.c_str(), clause.c_str(), engine::to_string(r.outcome),
                   convention.c_str());

@@ -138,7 +138,7 @@ Command add_certify(CLI::App& parent) {
   app->add_flag("--require-claimed-levels", args->require_claimed_levels,
                 "Exit 0 only if every table meets every level it claims");
   add_certify_options(*app, args->common);
-  app->callback([app, impl, plugin] {
+  app->callback([impl, plugin] {
     if (impl->count() + plugin->count() != 1) throw CLI::RequiredError("exactly one of --impl or --plugin");
   });
   return {app, [args] { return run(*args); }};

@@ -557,7 +557,7 @@ TEST(RotorSimdAccuracy, ToMatrix) {
 /// the format cannot hold it to relative precision (EDGE-5's headroom), so the accuracy runs of
 /// ops whose outputs scale with 1/|q| leave such inputs out.
 bool within_normal_range(const RQ& r) {
-  const Real big(double(std::numeric_limits<float>::max())), tiny(std::ldexp(1.0, -126));
+  const Real big{double(std::numeric_limits<float>::max())}, tiny{std::ldexp(1.0, -126)};  // braces: not a declaration
   for (const Real& c : {r.w, r.x, r.y, r.z})
     if (c != 0 && (abs(c) > big || abs(c) < tiny)) return false;
   return true;

@@ -259,7 +259,9 @@ Outcome certify_third_party(const spec::Spec& spec, const Options& o, const Know
   });
   // Other versions: the same adapter on another release of its library, a library of its own.
   for (const auto& [name, version] : o.versions) {
-    const auto it = std::find_if(all.begin(), all.end(), [&](const Manifest& m) { return m.name == name; });
+    // A plain reference: clang 14 cannot capture a structured binding (C++20 allows it; clang 16 does).
+    const std::string& adapter = name;
+    const auto it = std::find_if(all.begin(), all.end(), [&adapter](const Manifest& m) { return m.name == adapter; });
     if (it == all.end()) throw std::runtime_error("--version " + name + "=" + version + ": no adapter named '" + name + "'");
     if (!it->uses_environment())
       throw std::runtime_error("--version " + name + "=" + version + ": " + it->library + " comes from " +
