@@ -2,7 +2,6 @@
 #include "frame_job.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <map>

@@ -88,8 +88,9 @@ TEST(FrameJob, IsTheRenderCheckFrameMedium) {
 }
 
 // The routes no built-in table takes (method.hpp's fallbacks), on tables with ops removed:
-// keys by dq_sclerp of [q, 0], the DQS pose blend by dq_sclerp and the vertices by
-// skin_dual_quaternion (dq without slerp, dq_blend, dq_apply_point); the LBS pose blend by
+// keys by dq_sclerp of [q, 0], the DQS pose blend by dq_sclerp, and the render check's
+// vertices by skin_dual_quaternion (dq without slerp, dq_blend, dq_apply_point; FrameJob's own
+// vertex loop is the same on every route); the LBS pose blend by
 // nlerp (glm_quat without blend_qlb).
 TEST(FrameJob, IsTheRenderCheckFrameOnFallbackRoutes) {
   RC_CLAUSE("VIS-1");

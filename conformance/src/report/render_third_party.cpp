@@ -14,8 +14,6 @@
 namespace rotorcert::report::detail {
 
 namespace {
-/// The standalone reproducer of a defect (REPORT-3): its file, language and the command that runs
-/// it against the unmodified library.
 /// The library's tracker on a listed defect: "reported" with its threads, "not found" (searched,
 /// none), "declined" (maintainers call it intended); "not searched" when the entry has no
 /// "upstream". Threads as text, not links: the report links nothing outside itself.
@@ -42,6 +40,8 @@ std::string upstream_html(const json& defect) {
   return h;
 }
 
+/// The standalone reproducer of a defect (REPORT-3): its file, language and the command that runs
+/// it against the unmodified library.
 std::string reproducer_html(const json& defect) {
   if (!defect.contains("reproducer") || !defect["reproducer"].is_object())
     return "<strong class=\"no\">none</strong>";

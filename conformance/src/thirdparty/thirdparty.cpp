@@ -99,20 +99,23 @@ void finish(Library& lib, int cases_per_family, const std::set<std::string>& int
   lib.as_expected = expected;
 }
 
+/// The entry of expected_failures.json that lists defect `d` (its scalar and clause), or nullptr.
+const json* listed_entry(const std::vector<json>& listed, const Defect& d) {
+  for (const json& f : listed)
+    if (f.value("scalar", "") == d.scalar && f.value("clause", "") == d.result.clause) return &f;
+  return nullptr;
+}
+
 /// REPORT-3: every defect of a third-party library comes with a reproducer in the library's own
 /// language that calls it directly (conformance/adapters/NAME/reproducers/, named by the
 /// "reproducer" field of expected_failures.json, else by the clause), with the command that runs it
 /// and the ctest that checks it still shows the defect.
 void attach_reproducers(Library& lib, const std::vector<json>& listed) {
   const Manifest& m = lib.manifest;
-  std::map<std::string, std::string> named;  // scalar/clause -> file
-  for (const json& f : listed)
-    if (f.contains("reproducer"))
-      named[f.at("scalar").get<std::string>() + "/" + f.at("clause").get<std::string>()] = f.at("reproducer");
   for (Defect& d : lib.defects) {
     const std::string& clause = d.result.clause;
     std::string file;
-    if (const auto it = named.find(d.scalar + "/" + clause); it != named.end()) file = it->second;
+    if (const json* f = listed_entry(listed, d); f != nullptr && f->contains("reproducer")) file = f->at("reproducer");
     else
       for (const char* ext : {".cpp", ".py", ".js", ".rs"})
         if (fs::exists(m.dir / "reproducers" / (clause + ext))) file = clause + ext;
@@ -141,9 +144,8 @@ void attach_reproducers(Library& lib, const std::vector<json>& listed) {
 void attach_upstream(Library& lib, const std::vector<json>& listed) {
   for (Defect& d : lib.defects) {
     d.upstream.reset();
-    for (const json& f : listed)
-      if (f.value("scalar", "") == d.scalar && f.value("clause", "") == d.result.clause && f.contains("upstream"))
-        d.upstream = parse_upstream(f.at("upstream"));
+    if (const json* f = listed_entry(listed, d); f != nullptr && f->contains("upstream"))
+      d.upstream = parse_upstream(f->at("upstream"));
   }
 }
 
