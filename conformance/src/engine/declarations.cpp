@@ -584,8 +584,7 @@ std::vector<AcceptableConvention> build_conventions() {
                    // nlerp: the chord s = (1 - t) a + t b, defined unless s = 0. Near an antipode it is
                    // ill-conditioned: rounding the sum moves its direction by about u / |s|, so the
                    // error counts times min(1, |s|) (ACC-1 oriented; DQ-8 scales by its condition too).
-                   const Quat s{(Real(1) - t) * a.w + t * b.w, (Real(1) - t) * a.x + t * b.x,
-                                (Real(1) - t) * a.y + t * b.y, (Real(1) - t) * a.z + t * b.z};
+                   const Quat s = lerp_chord(a, b, t);
                    const Real length = ref::norm(s);
                    if (length == 0) return std::nullopt;
                    return unit_rotation_error(got[0], ref::normalized(s)) * std::min(Real(1), length);

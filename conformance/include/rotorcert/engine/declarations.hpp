@@ -122,6 +122,14 @@ struct AcceptableConvention {
 };
 const std::vector<AcceptableConvention>& acceptable_conventions();
 
+/// nlerp's chord (1 - t) a + t b, before normalising (NLERP-1 on an aligned pair; ACC-1 oriented
+/// and hemisphere_tie on the pair as given).
+template <class T>
+ref::Quaternion<T> lerp_chord(const ref::Quaternion<T>& a, const ref::Quaternion<T>& b, const T& t) {
+  return {(T(1) - t) * a.w + t * b.w, (T(1) - t) * a.x + t * b.x, (T(1) - t) * a.y + t * b.y,
+          (T(1) - t) * a.z + t * b.z};
+}
+
 /// ACC-1 hemisphere_tie on a blend or ScLERP: the case's inputs with every influence (ScLERP: b)
 /// whose real part's dot with the pivot's (with a's) is exactly 0 negated, the reference on which
 /// is the other branch of the tie. nullopt where none is (and for slerp and nlerp, whose other
@@ -136,9 +144,7 @@ ref::Quaternion<T> hemisphere_tie_other_branch(bool slerp, const ref::Quaternion
   namespace detail = ref::clause::detail;
   const ref::Quaternion<T> a = ref::normalized(qa), b = ref::normalized(qb);
   if (slerp) return detail::quaternion(detail::rotor_interpolation(detail::rotor(a), detail::rotor(b), t, !spec_flip));
-  const ref::Quaternion<T> bb = spec_flip ? b : -b;
-  return ref::normalized(ref::Quaternion<T>{(T(1) - t) * a.w + t * bb.w, (T(1) - t) * a.x + t * bb.x,
-                                            (T(1) - t) * a.y + t * bb.y, (T(1) - t) * a.z + t * bb.z});
+  return ref::normalized(lerp_chord(a, spec_flip ? b : -b, t));
 }
 
 /// Whether slerp's and nlerp's hemisphere rule (SLERP-1, EDGE-3) negates b: a.b < 0 strictly, on
