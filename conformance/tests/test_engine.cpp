@@ -155,6 +155,86 @@ TEST(Engine, BadInputAnsweredWithAValidLookingValueFails) {
   EXPECT_NE(r.worst_detail.find("expected DOMAIN_ERROR"), std::string::npos) << r.worst_detail;
 }
 
+namespace {
+/// normalize without a finiteness check, as most libraries are: a non-finite input goes through
+/// q / sqrt(q.q) in IEEE arithmetic, so (0, Inf, 0, 1) gives (0, NaN, 0, 0) with status OK.
+struct IeeeNormalizer : Normalizer<0> {
+  static ri::Status normalize(const Q& q, Q& out) {
+    if (std::isfinite(q[0] + q[1] + q[2] + q[3])) return Normalizer<0>::normalize(q, out);
+    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int i = 0; i < 4; ++i) out[i] = q[i] / n;
+    return ri::Status::ok;
+  }
+};
+/// normalize answering every non-finite input with the zero quaternion, status OK.
+struct ZeroFlagNormalizer : Normalizer<0> {
+  static ri::Status normalize(const Q& q, Q& out) {
+    if (std::isfinite(q[0] + q[1] + q[2] + q[3])) return Normalizer<0>::normalize(q, out);
+    out = {0, 0, 0, 0};
+    return ri::Status::ok;
+  }
+};
+/// normalize answering a quaternion with infinite components with the rotation it tends to
+/// (Right: the signs of the infinite components, normalised; else that rotation turned a quarter
+/// turn about z), and a NaN with NaN everywhere.
+template <bool Right>
+struct LimitNormalizer : Normalizer<0> {
+  static ri::Status normalize(const Q& q, Q& out) {
+    if (std::isfinite(q[0] + q[1] + q[2] + q[3])) return Normalizer<0>::normalize(q, out);
+    if (std::isnan(q[0]) || std::isnan(q[1]) || std::isnan(q[2]) || std::isnan(q[3])) {
+      out = {NAN, NAN, NAN, NAN};
+      return ri::Status::ok;
+    }
+    int count = 0;
+    for (double x : q) count += std::isinf(x) ? 1 : 0;
+    for (int i = 0; i < 4; ++i) out[i] = std::isinf(q[i]) ? std::copysign(1.0, q[i]) / std::sqrt(double(count)) : 0.0;
+    if constexpr (!Right) {  // r q with r = (1 + k) / sqrt 2
+      const double s = 1 / std::sqrt(2.0);
+      out = {s * (out[0] - out[1]), s * (out[1] + out[0]), s * (out[2] + out[3]), s * (out[3] - out[2])};
+    }
+    return ri::Status::ok;
+  }
+};
+}  // namespace
+
+TEST(Engine, TheRotationAnInfiniteQuaternionTendsToIsAcceptable) {
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("ACC-1");
+  // normalize((0, Inf, 0, 1)) = (0, 1, 0, 0): the limit as the infinite component grows, a
+  // correct answer (ACC-1 nonfinite_limit); another finite rotation is not.
+  const auto r = run(ri::table<LimitNormalizer<true>>(), "EDGE-7");
+  EXPECT_EQ(r.outcome, engine::Outcome::pass) << r.worst_detail << " " << r.worst_input;
+  bool limit = false;
+  for (const auto& a : r.acceptable) limit = limit || a.convention == "nonfinite_limit";
+  EXPECT_TRUE(limit);
+  EXPECT_EQ(run(ri::table<LimitNormalizer<false>>(), "EDGE-7").outcome, engine::Outcome::fail);
+  // The bars are those of class eps16, as ACC-1 says.
+  const spec::ToleranceClass& eps16 = the_spec().tolerance_classes.at("eps16");
+  for (const auto& a : engine::acceptable_conventions())
+    if (a.id == "nonfinite_limit") {
+      ASSERT_TRUE(a.bars.has_value());
+      EXPECT_EQ(a.bars->strict, eps16.strict_value()->toDouble());
+      EXPECT_EQ(a.bars->loose, eps16.loose_value()->toDouble());
+    }
+}
+
+TEST(Engine, ANonFiniteInputCarriedIntoTheResultIsAcceptable) {
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("ACC-1");
+  // Not every component is NaN (Inf/Inf is, 0/Inf is 0), but the result shows the bad input:
+  // ACC-1 nonfinite_propagation. The all-finite identity for the same inputs stays a FAIL
+  // (BadInputAnsweredWithAValidLookingValueFails).
+  const auto r = run(ri::table<IeeeNormalizer>(), "EDGE-7");
+  EXPECT_EQ(r.outcome, engine::Outcome::pass) << r.worst_detail << " " << r.worst_input;
+  ASSERT_EQ(r.acceptable.size(), 1u);
+  EXPECT_EQ(r.acceptable[0].convention, "nonfinite_propagation");
+  EXPECT_FALSE(r.acceptable[0].declared);
+  EXPECT_EQ(run(ri::table<Normalizer<1>>(), "EDGE-7").outcome, engine::Outcome::fail);
+  // Zero is no unit quaternion: the all-zero output flags the error (Eigen's inverse() of NaN).
+  const auto zero = run(ri::table<ZeroFlagNormalizer>(), "EDGE-7");
+  EXPECT_EQ(zero.outcome, engine::Outcome::pass) << zero.worst_detail << " " << zero.worst_input;
+}
+
 TEST(Engine, ZeroAnsweredWithTheIdentityIsAcceptable) {
   RC_CLAUSE("EDGE-6");
   RC_CLAUSE("ACC-1");

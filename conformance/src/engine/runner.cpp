@@ -478,7 +478,7 @@ CaseVerdict judge_against(const AbiOp& op, const spec::ToleranceClass& tc, const
         const std::optional<Real> alt = a.error(op, c, got, want.outputs, f);
         if (!alt) continue;
         const double alt_err = (*alt / eps).toDouble();
-        const ref::Verdict v = ref::clause::TOL_1_verdict(alt_err, bars_for(tc, op, c, eps));
+        const ref::Verdict v = ref::clause::TOL_1_verdict(alt_err, a.bars ? *a.bars : bars_for(tc, op, c, eps));
         if (v == ref::Verdict::fail) continue;
         CaseVerdict acceptable{v, alt_err, "expected DOMAIN_ERROR, got OK " + got_text() + " (" + a.id + ": " + a.description + ")"};
         acceptable.grade = Grade::acceptable;

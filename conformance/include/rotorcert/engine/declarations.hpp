@@ -27,6 +27,7 @@
 #include <rotorcert/reference/bounded.hpp>
 #include <rotorcert/reference/metrics.hpp>
 #include <rotorcert/reference/rotation_ops.hpp>
+#include <rotorcert/reference/tolerance.hpp>
 
 namespace rotorcert::engine {
 
@@ -119,6 +120,10 @@ struct AcceptableConvention {
   std::function<std::optional<ref::Bounded>(const AbiOp& op, const Case& c, const BoundedArrays& in,
                                             const BoundedArrays& got, const BoundedArrays& want, ref::Format f)>
       fast_error{};
+  /// Outside the domain the judge holds an acceptable answer to the bars of the clause's class,
+  /// which for EDGE-6 and EDGE-7 (class outcome) accept no numeric error: exact sentinels. A
+  /// convention whose answer is a rounded number gives the bars of the class ACC-1 names for it.
+  std::optional<ref::Bars> bars{};
 };
 const std::vector<AcceptableConvention>& acceptable_conventions();
 
