@@ -13,6 +13,7 @@
 // Build note: glm::lerp asserts t in [0, 1]; the project builds RelWithDebInfo (NDEBUG), so
 // nlerp extrapolates like the formula. In a debug build nlerp with t outside [0, 1] aborts.
 #define GLM_ENABLE_EXPERIMENTAL  // gtx/dual_quaternion.hpp refuses to compile without it
+#include <cmath>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/ext/quaternion_exponential.hpp>  // glm::log, glm::exp of quaternions
@@ -137,7 +138,10 @@ struct GlmQuat {
     return Status::ok;
   }
   // Rotations keep oriented volume; a GLM user leaves a pseudoscalar (a triple product) alone.
-  static Status apply_trivector(const Quat<S>&, const S& s, S& out) {
+  static Status apply_trivector(const Quat<S>& q, const S& s, S& out) {
+    // No GLM call runs here, so the glue answers bad input as the spec does (EDGE-7) rather
+    // than charge GLM with a finite answer to a NaN rotation it never saw.
+    if (!std::isfinite(q[0] + q[1] + q[2] + q[3])) return Status::domain_error;
     out = s;
     return Status::ok;
   }
