@@ -1,58 +1,67 @@
 //! rotorcert reproducer: nalgebra 0.35.0 (the version pinned in ../Cargo.lock), clause EDGE-7.
 //!
 //! EDGE-7 (spec/SPEC.md 9, class outcome): NaN or +-Inf in an input is DOMAIN_ERROR, every output
-//! NaN (a library without a status channel: all outputs NaN, RESULT-2). nalgebra checks no input
-//! for finiteness: Quaternion::normalize (coords / norm(), src/base/norm.rs) of (0, Inf, 0, 1) is
-//! (0, NaN, 0, 0); Quaternion * Quaternion with an infinite factor gives infinities;
-//! Quaternion::try_inverse of it returns Some((0, NaN, 0, 0)); DualQuaternion::normalize of an
-//! infinite dual part returns it with the real part intact; UnitQuaternion::axis_angle of a NaN
-//! quaternion returns None, documented as "the angle is zero".
+//! NaN (a library without a status channel: all outputs NaN, RESULT-2); status OK with some output
+//! NaN or +-Inf is ACCEPTABLE (ACC-1 nonfinite_propagation): nalgebra's normalize of (0, Inf, 0, 1)
+//! = (0, NaN, 0, 0), try_inverse, products, dual quaternions and isometries all carry the NaN or Inf
+//! into their results. An all-finite answer to a non-finite input stays a FAIL, and nalgebra gives
+//! one for the axis of a rotation: UnitQuaternion::axis (src/geometry/quaternion.rs:1297-1308) is
+//! Unit::try_new(v, 0) (:1307), whose test `sq_norm > min_norm * min_norm` (src/base/unit.rs:151)
+//! is false for a NaN norm, so it returns None, documented only as "None if the rotation is zero".
+//! axis_angle (:1350) then returns None ("Returns None if the angle is zero": the adapter writes
+//! that documented answer, angle 0 about (0, 0, 1)), and ln (:1382-1390) returns Quaternion::zero()
+//! (:1388), the logarithm of the identity. UnitQuaternion::from_quaternion (the documented way to
+//! get one) of a quaternion with a NaN is all NaN, and of one with an infinity NaN there (Inf/Inf)
+//! and 0 elsewhere: axis() answers None for every one of them, and each reads as the identity. The
+//! suite's worst input: to_axis_angle of q with a NaN w.
 //! Upstream: no matching issue found in dimforge/nalgebra.
 //! Run: cargo run --release --manifest-path conformance/adapters/nalgebra/Cargo.toml
 //!      --target-dir build/adapters/nalgebra/target --example EDGE-7
 //! Exit 0: defect shown; 1: not shown (nalgebra changed: update expected_failures.json).
 #![allow(dead_code)]
-use nalgebra::{DualQuaternion, Quaternion};
+use nalgebra::{Quaternion, UnitQuaternion};
 
-fn all_nan(v: &[f64]) -> bool {
-    v.iter().all(|x| x.is_nan())
+fn finite(v: &[f64]) -> bool {
+    v.iter().all(|x| x.is_finite())
 }
 
 fn main() {
-    println!("rotorcert reproducer: nalgebra 0.35.0 EDGE-7: non-finite input gives partly finite output with no error (normalize, try_inverse, *, DualQuaternion::normalize)");
-    let mut shown = false;
-    let inf = f64::INFINITY;
-    // EX-EDGE-7-b: normalize((0, Inf, 0, 1)).
-    let q = [0.0, inf, 0.0, 1.0];
-    let qq = Quaternion::new(q[3], q[0], q[1], q[2]);
-    let n = qq.normalize();
-    let got = [n.i, n.j, n.k, n.w];
-    shown |= !all_nan(&got);
-    println!("call:    Quaternion::new(w, x, y, z).normalize()   (f64; f32 alike)");
-    println!("input:   q [x, y, z, w] = {}   (EX-EDGE-7-b)", hxs(&q));
-    println!("library: {}{}", hxs(&got), if !all_nan(&got) { "  <-- not all NaN: status OK" } else { "" });
-    let inv = qq.try_inverse().map(|r| [r.i, r.j, r.k, r.w]);
-    if let Some(r) = inv {
-        shown |= !all_nan(&r);
+    println!("rotorcert reproducer: nalgebra 0.35.0 EDGE-7: axis_angle of a NaN quaternion is None ('the angle is zero') and ln is 0: the identity's answers");
+    // The suite's worst input (to_axis_angle, "NaN in q"), [x, y, z, w] as the report prints it,
+    // binary64 and binary32.
+    let q = [hexf("-0x1.810a95e48461ap-2"), hexf("0x1.38a1510f9f2a8p-2"), hexf("0x1.bee277da5b067p-1"), hexf("-nan")];
+    let q32 = [hexf("-0x1.810a96p-2"), hexf("0x1.38a152p-2"), hexf("0x1.bee278p-1"), hexf("-nan")];
+
+    let u = UnitQuaternion::from_quaternion(Quaternion::new(q[3], q[0], q[1], q[2]));
+    let aa = u.axis_angle().map(|(axis, angle)| [axis.x, axis.y, axis.z, angle]);
+    let l = u.ln();
+    let ln = [l.i, l.j, l.k, l.w];
+    let f = q32.map(|x| x as f32);
+    let u32 = UnitQuaternion::from_quaternion(Quaternion::new(f[3], f[0], f[1], f[2]));
+    let aa32 = u32.axis_angle().map(|(axis, angle)| [axis.x as f64, axis.y as f64, axis.z as f64, angle as f64]);
+    let l32 = u32.ln();
+    let ln32 = [l32.i as f64, l32.j as f64, l32.k as f64, l32.w as f64];
+
+    // The defect: an answer with no NaN left in it (None, "the angle is zero", or a finite log).
+    let shown = !finite(&q) && (aa.map_or(true, |r| finite(&r)) || finite(&ln));
+    let shown32 = !finite(&q32) && (aa32.map_or(true, |r| finite(&r)) || finite(&ln32));
+    let uq = u.quaternion();
+    println!("call:    UnitQuaternion::from_quaternion(Quaternion::new(w, x, y, z)).axis_angle(), .axis(), .ln()");
+    println!("input:   q [x, y, z, w] = {}   (binary32: {})", hxs(&q), hxs(&q32));
+    println!("         from_quaternion: {}", hxs(&[uq.i, uq.j, uq.k, uq.w]));
+    println!("library: axis_angle() = {}{}", aa.map_or("None".to_string(), |r| format!("Some(axis {}, angle {})", hxs(&r[..3]), hx(r[3]))),
+             if aa.is_none() { "  <-- documented as 'the angle is zero': the identity" } else { "" });
+    println!("         axis() = {}", if u.axis().is_none() { "None" } else { "Some(..)" });
+    println!("         ln() [x, y, z, w] = {}{}", hxs(&ln), if finite(&ln) { "  <-- zero: the log of the identity" } else { "" });
+    println!("         binary32: axis_angle() = {}, ln() = {}", aa32.map_or("None".to_string(), |r| hxs(&r)), hxs(&ln32));
+    println!("         (angle() alone = {}: the NaN reaches it)", hx(u.angle()));
+    println!("correct: DOMAIN_ERROR: angle NaN, axis [nan, nan, nan], log [nan, nan, nan] (EDGE-7), or some output NaN/Inf (ACC-1 nonfinite_propagation)");
+    if !(shown || shown32) {
+        println!("DEFECT NOT SHOWN");
+        std::process::exit(1);
     }
-    println!("call:    Quaternion::new(w, x, y, z).try_inverse()");
-    println!("library: {:?}", inv.map(|r| hxs(&r)));
-    let p = qq * Quaternion::new(0.9, 0.1, 0.2, 0.3);
-    let got = [p.i, p.j, p.k, p.w];
-    shown |= !all_nan(&got);
-    println!("call:    q * Quaternion::new(0.9, 0.1, 0.2, 0.3)");
-    println!("library: {}", hxs(&got));
-    // a dual quaternion with an infinite dual part.
-    let d = [0.0, 0.0, 0.0, 1.0, inf, 0.0, 0.0, 0.0];
-    let n = DualQuaternion::from_real_and_dual(Quaternion::new(d[3], d[0], d[1], d[2]), Quaternion::new(d[7], d[4], d[5], d[6])).normalize();
-    let got = [n.real.i, n.real.j, n.real.k, n.real.w, n.dual.i, n.dual.j, n.dual.k, n.dual.w];
-    shown |= !all_nan(&got);
-    println!("call:    DualQuaternion::from_real_and_dual(real, dual).normalize()");
-    println!("input:   d [real xyzw, dual xyzw] = {}", hxs(&d));
-    println!("library: {}", hxs(&got));
-    println!("correct: DOMAIN_ERROR: every output NaN (EDGE-7; nalgebra has no error channel here)");
-    println!("{}", if shown { "DEFECT SHOWN" } else { "DEFECT NOT SHOWN" });
-    std::process::exit(if shown { 0 } else { 1 });
+    println!("error:   an all-finite answer to a non-finite input: the NaN no longer reaches the caller");
+    println!("DEFECT SHOWN");
 }
 
 // ---- helpers: exact hexfloat input and output, the spec's metrics (each reproducer is standalone) ----
