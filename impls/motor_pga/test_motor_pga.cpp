@@ -21,6 +21,7 @@
 #include <rotorcert/reference/rotation_ops.hpp>
 #include <rotorcert/testing/abi_values.hpp>
 #include <rotorcert/testing/clause.hpp>
+#include <rotorcert/testing/rigid_law_tests.hpp>
 #include <rotorcert/testing/rigid_laws.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
@@ -184,122 +185,15 @@ TEST(MotorAlgebra, ExpAndLogMatchTheReferenceClosedForms) {
   });
 }
 
-// ---- the ABI tables ----------------------------------------------------------------------------------
+// ---- the ABI tables (with the laws of every table of dual-quaternion ops, at the end) -----------------
 
-TEST(MotorPga, NormaliseMakesRealUnitAndDualOrthogonal) {
-  RC_CLAUSE("DQ-4");
-  RC_CLAUSE("EDGE-5");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::normalise_makes_real_unit_and_dual_orthogonal<S>(ops<S>());
-    rigid_laws::normalise_removes_a_large_parallel_part<S>(ops<S>());
-  });
-}
-
-TEST(MotorPga, LogAndExpKeepASubnormalRotation) {
-  RC_CLAUSE("DQ-8");
-  RC_CLAUSE("DQ-9");
-  RC_CLAUSE("EDGE-1");
-  rigid_laws::log_exp_keep_a_subnormal_rotation<float>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 0)->f32_v4);
-  rigid_laws::log_exp_keep_a_subnormal_rotation<double>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 1)->f64_v4);
-}
-
-TEST(MotorPga, LogNearTheCutKeepsTheScrew) {
-  RC_CLAUSE("DQ-8");
-  rigid_laws::log_near_the_cut_keeps_the_screw<float>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 0)->f32_v4);
-  rigid_laws::log_near_the_cut_keeps_the_screw<double>(*rotorcert_impl_entry_motor_pga(RC_ABI_VERSION, 1)->f64_v4);
-}
-
-TEST(MotorPga, InterpolationOfPureTranslationIsLinearInT) {
-  RC_CLAUSE("DQ-5");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::sclerp_of_pure_translation_is_linear_in_t<S>(ops<S>());
-  });
-}
-
-TEST(MotorPga, DqsKeepsTheRadiusOfATwistedVertex) {
-  RC_CLAUSE("SKIN-2");
-  both([](auto tag) {
-    using S = decltype(tag);
-    for (int k = 1; k < 16; ++k) {
-      const double theta = k * 3.14159265358979323846 / 16;
-      const S sn = S(std::sin(theta / 2)), cs = S(std::cos(theta / 2));
-      const std::array<Q<S>, 2> q{Q<S>{sn, 0, 0, cs}, Q<S>{-sn, 0, 0, cs}};
-      const std::array<V<S>, 2> t{V<S>{0, 0, 0}, V<S>{0, 0, 0}};
-      const std::array<S, 2> w{S(0.5), S(0.5)};
-      const V<S> v{S(0.75), S(1.5), S(0)};
-      V<S> out;
-      std::uint8_t st = 9;
-      ops<S>().skin_dual_quaternion(1, 2, q.front().data(), t.front().data(), w.data(), v.data(), out.data(), &st);
-      ASSERT_EQ(st, RC_OK);
-      const Real scale = max(Real(1), norm3(rv(v)));
-      const Real radius = sqrt(Real(out[1]) * Real(out[1]) + Real(out[2]) * Real(out[2]));
-      EXPECT_LE((abs(radius - Real(v[1])) / scale / eps<S>()).toDouble(), strict("eps64")) << theta;
-      EXPECT_LE((abs(Real(out[0]) - Real(v[0])) / scale / eps<S>()).toDouble(), strict("eps64")) << theta;
-    }
-  });
-}
-
-TEST(MotorPga, IdentityInIdentityOut) {
-  RC_CLAUSE("EDGE-1");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::identity_in_identity_out<S>(ops<S>());
-  });
-}
-
-TEST(MotorPga, OutsideTheDomainIsDomainErrorWithNaN) {
-  RC_CLAUSE("EDGE-6");
-  RC_CLAUSE("EDGE-7");
-  RC_CLAUSE("EDGE-9");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::outside_the_domain_is_domain_error_with_nan<S>(ops<S>());
-  });
-}
-
-TEST(MotorPga, BlendDoesNotFlipOnExactlyZeroDot) {
-  RC_CLAUSE("EDGE-3");
-  RC_CLAUSE("DQ-6");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::blend_does_not_flip_on_exactly_zero_dot<S>(ops<S>());
-  });
-}
-
-TEST(MotorPga, ApplyPointFastAndCheckedPathsAgree) {
-  RC_CLAUSE("DQ-3");
-  RC_CLAUSE("EDGE-5");
-  RC_CLAUSE("EDGE-7");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::apply_point_fast_and_checked_paths_agree<S>(ops<S>());
-  });
-}
-
-TEST(MotorPga, BlendFastAndCheckedPathsAgree) {
-  RC_CLAUSE("DQ-6");
-  RC_CLAUSE("EDGE-5");
-  both([](auto tag) {
-    using S = decltype(tag);
-    rigid_laws::blend_fast_and_checked_paths_agree<S>(ops<S>());
-  });
-}
-
+/// DQS through the motors: SKIN-2, whose blend of the influences' motors is MOTOR-5's (the
+/// dual-quaternion ops of the tables, dq_blend among them: RigidLaws.SmokeAgainstReference).
 TEST(MotorPga, SmokeAgainstReference) {
-  RC_CLAUSE("DQ-1");
-  RC_CLAUSE("DQ-2");
-  RC_CLAUSE("DQ-3");
-  RC_CLAUSE("DQ-5");
-  RC_CLAUSE("DQ-6");
   RC_CLAUSE("MOTOR-5");
-  RC_CLAUSE("AXIS-1");
   RC_CLAUSE("SKIN-2");
   both([](auto tag) {
     using S = decltype(tag);
-    rigid_laws::rigid_smoke_against_reference<S>(ops<S>());
-    // DQS through the motors (SKIN-2).
     Rng rng;
     std::uint8_t st = 9;
     for (int i = 0; i < 40; ++i) {
@@ -320,3 +214,10 @@ TEST(MotorPga, SmokeAgainstReference) {
 }
 
 }  // namespace
+
+// The laws that every table of dual-quaternion ops keeps, on motor_pga's tables: MotorPga/RigidLaws/0.*
+// (rotorcert/testing/rigid_law_tests.hpp; ctest shows MotorPga.<law><MotorPgaTables>).
+struct MotorPgaTables : rotorcert::testing::rigid_laws::AbiTables<&rotorcert_impl_entry_motor_pga> {};
+namespace rotorcert::testing::rigid_laws {
+INSTANTIATE_TYPED_TEST_SUITE_P(MotorPga, RigidLaws, MotorPgaTables);
+}  // namespace rotorcert::testing::rigid_laws
