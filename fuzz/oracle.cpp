@@ -17,6 +17,7 @@
 
 #include <rotorcert/engine/abi_op.hpp>
 #include <rotorcert/engine/cases.hpp>
+#include <rotorcert/engine/declarations.hpp>
 #include <rotorcert/engine/fast_oracle.hpp>
 #include <rotorcert/reference/scalar.hpp>
 #include <rotorcert/registry.hpp>
@@ -877,10 +878,13 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
   for (const rc_impl* t : tables) {
     if ((t->scalar == RC_SCALAR_FLOAT64) != d.f64 || !eligible(*t, op.name)) continue;
     ++run;
+    // DECL-1: an input outside a precondition the library documents is not judged, as in certify.
+    const engine::Declarations declared = engine::declarations_of(*t);
     const TableResults got = call_raw(*t, op, d.n, d.k, d.raw);
     std::vector<std::string> got_key(d.n);
     for (std::size_t e = 0; e < d.n; ++e) {
       if (judge[e] == Judge::nothing) continue;
+      if (!declared.preconditions.empty() && engine::violated_precondition(declared, op, d.exact_case(e), f)) continue;
       got_key[e] = got.key(e);
       if (is_cleared(e, got_key[e])) continue;
       if (judge[e] == Judge::everything) {
