@@ -83,10 +83,13 @@ struct EigenQuat {
   //   Quaternion.h:253 "Operations interpreting the quaternion as rotation have undefined behavior
   //     if the quaternion is not normalized"; :587 toRotationMatrix "The quaternion is required to
   //     be normalized"; :774 slerp "at the parameter t in [0;1]"; :573 Quaternion(Matrix3) "xpr
-  //     is assumed to be rotation matrix"; AngleAxis.h:23 "the axis vector must be normalized".
+  //     is assumed to be rotation matrix"; AngleAxis.h:23 "the axis vector must be normalized";
+  //     AngleAxis.h:162 AngleAxis = quaternion "Set *this from a unit quaternion" (angle() and axis()
+  //     read from it), one of the operations :253 speaks of.
   static constexpr const char* const preconditions[] = {
       "apply_vector:unit_quaternion", "apply_bivector:unit_quaternion", "to_matrix:unit_quaternion",
       "slerp:unit_quaternion", "slerp:t_in_unit_interval", "from_matrix:rotation_matrix", "from_axis_angle:unit_axis",
+      "to_axis_angle:unit_quaternion", "to_angle:unit_quaternion", "to_axis:unit_quaternion",
       // nlerp and QLB are glue with Eigen's operations (Eigen has neither); they take the
       // contract of the interpolation they copy, QuaternionBase::slerp (unit quaternions), so
       // that no FAIL of the glue on a zero or non-unit input is charged to Eigen.
