@@ -768,6 +768,20 @@ bool eligible(const rc_impl& table, const std::string& op, std::string* why) {
   return it->second;
 }
 
+namespace {
+
+/// Memoised per table, as eligible(): a table's declarations (DECL-1) do not change during a run.
+const engine::Declarations& declarations(const rc_impl& table) {
+  static std::map<const rc_impl*, engine::Declarations> cache;
+  static std::mutex m;
+  const std::lock_guard<std::mutex> lock(m);
+  auto it = cache.find(&table);
+  if (it == cache.end()) it = cache.emplace(&table, engine::declarations_of(table)).first;
+  return it->second;
+}
+
+}  // namespace
+
 int check(const Decoded& d) { return check(d, impl::builtin_tables(), print_and_abort); }
 
 int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const FindingHandler& on_finding) {
@@ -879,7 +893,7 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
     if ((t->scalar == RC_SCALAR_FLOAT64) != d.f64 || !eligible(*t, op.name)) continue;
     ++run;
     // DECL-1: an input outside a precondition the library documents is not judged, as in certify.
-    const engine::Declarations declared = engine::declarations_of(*t);
+    const engine::Declarations& declared = declarations(*t);
     const TableResults got = call_raw(*t, op, d.n, d.k, d.raw);
     std::vector<std::string> got_key(d.n);
     for (std::size_t e = 0; e < d.n; ++e) {

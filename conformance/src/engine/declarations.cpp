@@ -34,6 +34,20 @@ bool all_finite(const Case& c) {
   return true;
 }
 
+/// Whether every output component is +-0 (a sentinel of EDGE-6 and EDGE-7).
+bool every_output_zero(const Values& got) {
+  return std::all_of(got.begin(), got.end(), [](const std::vector<Real>& a) {
+    return std::all_of(a.begin(), a.end(), [](const Real& x) { return x == 0; });
+  });
+}
+
+/// Whether some output component is NaN or infinite: a non-finite input carried into the result.
+bool some_output_nonfinite(const Values& got) {
+  return std::any_of(got.begin(), got.end(), [](const std::vector<Real>& a) {
+    return std::any_of(a.begin(), a.end(), [](const Real& x) { return !mpfr::isfinite(x); });
+  });
+}
+
 /// Whether the all-zero output is no answer the op can give: it returns a rotation (quaternion,
 /// dual quaternion, matrix) or a unit axis, never zero, so zero flags an error (EDGE-6, EDGE-7).
 bool zero_is_no_answer(const AbiOp& op) {
@@ -326,27 +340,25 @@ std::optional<Real> error_as_answer_to(const AbiOp& op, const Case& sub, const V
 /// outside a quaternion input (a vector, t, a weight, a dual quaternion: no rotation to tend to),
 /// or none.
 std::optional<Case> infinity_limit(const AbiOp& op, const Case& c) {
-  Case lim = c;
+  const auto quaternion = [&](std::size_t a) { return a < op.inputs.size() && op.inputs[a].stride == 4; };
   bool any = false;
-  for (std::size_t a = 0; a < lim.inputs.size(); ++a) {
-    auto& v = lim.inputs[a];
-    const bool quaternion = a < op.inputs.size() && op.inputs[a].stride == 4;
-    for (std::size_t j = 0; j < v.size(); ++j) {
-      if (mpfr::isnan(v[j])) return std::nullopt;
-      if (mpfr::isinf(v[j]) && !quaternion) return std::nullopt;
+  for (std::size_t a = 0; a < c.inputs.size(); ++a)
+    for (const Real& x : c.inputs[a]) {
+      if (mpfr::isnan(x) || (mpfr::isinf(x) && !quaternion(a))) return std::nullopt;
+      any = any || mpfr::isinf(x);
     }
-    if (!quaternion) continue;
+  if (!any) return std::nullopt;
+  Case lim = c;
+  for (std::size_t a = 0; a < lim.inputs.size(); ++a) {
+    if (!quaternion(a)) continue;
+    auto& v = lim.inputs[a];
     for (std::size_t j = 0; j + 4 <= v.size(); j += 4) {
-      const bool infinite = std::any_of(v.begin() + long(j), v.begin() + long(j) + 4, [](const Real& x) { return mpfr::isinf(x); });
-      if (!infinite) continue;
-      int count = 0;
-      for (std::size_t i = j; i < j + 4; ++i) count += mpfr::isinf(v[i]) ? 1 : 0;
-      const Real scale = Real(1) / sqrt(Real(count));
+      const auto count = std::count_if(v.begin() + long(j), v.begin() + long(j) + 4, [](const Real& x) { return mpfr::isinf(x); });
+      if (count == 0) continue;
+      const Real scale = Real(1) / sqrt(Real(long(count)));
       for (std::size_t i = j; i < j + 4; ++i) v[i] = mpfr::isinf(v[i]) ? (v[i] > 0 ? scale : Real(-scale)) : Real(0);
-      any = true;
     }
   }
-  if (!any) return std::nullopt;
   return lim;
 }
 
@@ -670,10 +682,7 @@ std::vector<AcceptableConvention> build_conventions() {
                  },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
                    if (robust_clause_of(op, c, f) != "EDGE-6") return std::nullopt;
-                   const bool all_zero = std::all_of(got.begin(), got.end(), [](const std::vector<Real>& a) {
-                     return std::all_of(a.begin(), a.end(), [](const Real& x) { return x == 0; });
-                   });
-                   if (all_zero) return Real(0);
+                   if (every_output_zero(got)) return Real(0);
                    const std::optional<Case> id = identity_substituted(op, c);
                    if (!id) return std::nullopt;
                    // The identity's output as any correct library may give it (identity_axis:
@@ -694,13 +703,7 @@ std::vector<AcceptableConvention> build_conventions() {
                  [](const AbiOp&, const Case& c, ref::Format) { return !all_finite(c); },
                  [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format) -> std::optional<Real> {
                    if (all_finite(c)) return std::nullopt;
-                   bool all_zero = true;
-                   for (const std::vector<Real>& a : got)
-                     for (const Real& x : a) {
-                       if (!mpfr::isfinite(x)) return Real(0);
-                       all_zero = all_zero && x == 0;
-                     }
-                   if (all_zero && zero_is_no_answer(op)) return Real(0);
+                   if (some_output_nonfinite(got) || (zero_is_no_answer(op) && every_output_zero(got))) return Real(0);
                    return std::nullopt;
                  },
                  true};
@@ -719,11 +722,9 @@ std::vector<AcceptableConvention> build_conventions() {
                            false, [](const AbiOp& op) { return has_stride(op, 4); },
                            [](const AbiOp& op, const Case& c, ref::Format) { return infinity_limit(op, c).has_value(); },
                            [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
+                             if (some_output_nonfinite(got)) return std::nullopt;  // nonfinite_propagation's case
                              const std::optional<Case> lim = infinity_limit(op, c);
                              if (!lim) return std::nullopt;
-                             for (const std::vector<Real>& arr : got)
-                               for (const Real& x : arr)
-                                 if (!mpfr::isfinite(x)) return std::nullopt;  // nonfinite_propagation's case
                              return error_as_answer_to(op, *lim, got, f);
                            },
                            true};
