@@ -1017,3 +1017,213 @@ TEST(Engine, AnOrientedChordNearAnAntipodeIsJudgedByItsCondition) {
   wrong.outputs = {{engine::Real(0), engine::Real(0), engine::Real(0), engine::Real(1)}};
   EXPECT_EQ(engine::judge_case(*op, tc, c, wrong, ref::Format::binary64, nullptr, &oriented).verdict, ref::Verdict::fail);
 }
+
+namespace {
+
+/// gl-matrix's getAxisAngle: angle = 2 acos(w), axis = v / sin(angle/2), one call; to_angle and
+/// to_axis are its two outputs. A NaN in x, y or z leaves the angle finite and reaches the axis.
+/// HideInAxis: glam's to_axis_angle instead, whose whole call hides it too (|v| >= 1e-6 is false
+/// for a NaN |v|: angle 0 about (1, 0, 0)).
+template <bool Declared, bool HideInAxis>
+struct CombinedAxisAngle : Normalizer<0> {
+  static constexpr const char* const conventions[] = {Declared ? "to_angle:output_of_to_axis_angle" : nullptr,
+                                                      Declared ? "to_axis:output_of_to_axis_angle" : nullptr, nullptr};
+  static ri::Status to_axis_angle(const Q& q, double& angle, V& axis) {
+    if constexpr (HideInAxis) {
+      const double n = std::hypot(q[0], q[1], q[2]);
+      if (n >= 1e-6) {
+        angle = 2 * std::atan2(n, q[3]);
+        axis = {q[0] / n, q[1] / n, q[2] / n};
+      } else {
+        angle = 0;
+        axis = {1, 0, 0};
+      }
+      return ri::Status::ok;
+    }
+    angle = 2 * std::acos(q[3]);
+    const double s = std::sin(angle / 2);
+    if (s <= 1e-6) axis = {1, 0, 0};
+    else axis = {q[0] / s, q[1] / s, q[2] / s};
+    return ri::Status::ok;
+  }
+  static ri::Status to_angle(const Q& q, double& angle) {
+    V axis;
+    return to_axis_angle(q, angle, axis);
+  }
+  static ri::Status to_axis(const Q& q, V& axis) {
+    double angle;
+    return to_axis_angle(q, angle, axis);
+  }
+};
+
+/// The same to_angle with no to_axis_angle: the declaration names a call the table lacks.
+struct AngleWithoutTheCall : Normalizer<0> {
+  static constexpr const char* const conventions[] = {"to_angle:output_of_to_axis_angle", nullptr};
+  static ri::Status to_angle(const Q& q, double& angle) {
+    angle = 2 * std::acos(q[3]);
+    return ri::Status::ok;
+  }
+};
+
+std::string declaration_problem_of(const rc_impl* t) {
+  return engine::declaration_problem(engine::declarations_of(*t),
+                                     [&](const std::string& op) { return engine::supports(*t, op); });
+}
+
+}  // namespace
+
+TEST(Engine, AnOutputOfACombinedCallIsJudgedWithTheWholeCall) {
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("ACC-1");
+  RC_CLAUSE("DECL-1");
+  // Judged alone, the finite angle of a NaN input hides the NaN the same call writes to the axis.
+  EXPECT_EQ(run(ri::table<CombinedAxisAngle<false, false>>(), "EDGE-7").outcome, engine::Outcome::fail);
+  // Declared as an output of to_axis_angle's call, the angle passes, and the whole call
+  // (to_axis_angle, same clause) shows the NaN: nonfinite_propagation.
+  const auto r = run(ri::table<CombinedAxisAngle<true, false>>(), "EDGE-7");
+  EXPECT_EQ(r.outcome, engine::Outcome::pass) << r.worst_detail << " " << r.worst_input;
+  bool declared = false;
+  for (const auto& a : r.acceptable) declared = declared || (a.convention == "output_of_to_axis_angle" && a.declared);
+  EXPECT_TRUE(declared);
+  // The declaration excuses no call that hides the NaN from both outputs.
+  EXPECT_EQ(run(ri::table<CombinedAxisAngle<true, true>>(), "EDGE-7").outcome, engine::Outcome::fail);
+  // It needs the call: a table without to_axis_angle cannot declare it, nor an op it names.
+  EXPECT_EQ(declaration_problem_of(ri::table<CombinedAxisAngle<true, false>>()), "");
+  EXPECT_NE(declaration_problem_of(ri::table<AngleWithoutTheCall>()).find("to_axis_angle"), std::string::npos);
+}
+
+TEST(Engine, DeclarationsNameIdsAndOpsTheSpecDefines) {
+  RC_CLAUSE("DECL-1");
+  const auto every_op = [](const std::string&) { return true; };
+  EXPECT_EQ(engine::declaration_problem({{"*:finite", "slerp:t_in_unit_interval"}, {"from_matrix:sign"}}, every_op), "");
+  EXPECT_NE(engine::declaration_problem({{"slerp:unit_quaterion"}, {}}, every_op), "");    // a misspelt id
+  EXPECT_NE(engine::declaration_problem({{"slerpp:unit_quaternion"}, {}}, every_op), "");  // no such op
+  EXPECT_NE(engine::declaration_problem({{"exp:unit_axis"}, {}}, every_op), "");           // exp has no axis
+  EXPECT_NE(engine::declaration_problem({{}, {"normalize:sign"}}, every_op), "");          // sign is not normalize's
+  EXPECT_NE(engine::declaration_problem({{}, {"log:no_such_convention"}}, every_op), "");
+  // Every built-in table's declarations are honoured.
+  for (const rc_impl* t : ri::builtin_tables()) EXPECT_EQ(declaration_problem_of(t), "") << t->name;
+}
+
+namespace {
+/// apply_vector answering an infinite vector with a finite one: no rotation has a "limit" there
+/// (ACC-1 nonfinite_limit covers infinite quaternions only), so the finite answer hides the Inf.
+/// An infinite quaternion is answered with its limit rotation, which is acceptable.
+template <bool VectorLimit>
+struct InfiniteVectorAnswered : Normalizer<0> {
+  static ri::Status apply_vector(const Q& q, const V& v, V& out) {
+    Q u;
+    Q lim = q;
+    bool inf = false;
+    for (double& x : lim)
+      if (std::isinf(x)) inf = true;
+    if (inf)
+      for (double& x : lim) x = std::isinf(x) ? std::copysign(1.0, x) : 0.0;
+    if (!normalize_exact(lim, u)) return ri::Status::domain_error;
+    V w = v;
+    bool vector_inf = false;
+    for (double x : v) {
+      if (std::isnan(x) || (std::isinf(x) && !VectorLimit)) return ri::Status::domain_error;
+      vector_inf = vector_inf || std::isinf(x);
+    }
+    if (vector_inf) {  // the direction the vector tends to, as a quaternion's limit is taken
+      double count = 0;
+      for (double x : w) count += std::isinf(x) ? 1 : 0;
+      for (double& x : w) x = std::isinf(x) ? std::copysign(1 / std::sqrt(count), x) : 0.0;
+    }
+    const V c{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const V t{2 * c[0], 2 * c[1], 2 * c[2]};
+    const V d{u[1] * t[2] - u[2] * t[1], u[2] * t[0] - u[0] * t[2], u[0] * t[1] - u[1] * t[0]};
+    for (int i = 0; i < 3; ++i) out[i] = w[i] + u[3] * t[i] + d[i];
+    return ri::Status::ok;
+  }
+};
+}  // namespace
+
+TEST(Engine, OnlyAnInfiniteQuaternionHasALimit) {
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("ACC-1");
+  const auto quaternion_only = run(ri::table<InfiniteVectorAnswered<false>>(), "EDGE-7");
+  EXPECT_EQ(quaternion_only.outcome, engine::Outcome::pass) << quaternion_only.worst_detail << " " << quaternion_only.worst_input;
+  const auto vector_too = run(ri::table<InfiniteVectorAnswered<true>>(), "EDGE-7");
+  EXPECT_EQ(vector_too.outcome, engine::Outcome::fail);
+  EXPECT_NE(vector_too.worst_input.find("inf"), std::string::npos) << vector_too.worst_input;
+}
+
+namespace {
+/// Eigen's normalized(): q / sqrt(|q|^2) where |q|^2 > 0, else q unchanged, |q|^2 computed in
+/// the format, so a subnormal quaternion comes back unchanged (its squared norm underflows) and a
+/// huge one as zero (it overflows). Declared: the documented limit of Dot.h.
+template <bool Declared>
+struct SquaredNormNormalizer : Normalizer<0> {
+  static constexpr const char* const preconditions[] = {Declared ? "normalize:norm_in_range" : nullptr, nullptr};
+  static ri::Status normalize(const Q& q, Q& out) {
+    const double z = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    if (std::isnan(z)) return ri::Status::domain_error;
+    out = q;
+    if (z > 0)
+      for (double& x : out) x /= std::sqrt(z);
+    return ri::Status::ok;
+  }
+};
+}  // namespace
+
+TEST(Engine, ADocumentedSquaredNormLimitIsAPrecondition) {
+  RC_CLAUSE("DECL-1");
+  RC_CLAUSE("EDGE-8");
+  RC_CLAUSE("EDGE-5");
+  // Undeclared, the subnormal quaternion returned unchanged (not unit) FAILs ...
+  EXPECT_EQ(run(ri::table<SquaredNormNormalizer<false>>(), "EDGE-8").outcome, engine::Outcome::fail);
+  EXPECT_EQ(run(ri::table<SquaredNormNormalizer<false>>(), "EDGE-5").outcome, engine::Outcome::fail);
+  // ... declared, those inputs are outside the precondition: NOT_SUPPORTED, counted, never a FAIL.
+  for (const char* clause : {"EDGE-8", "EDGE-5"}) {
+    const auto r = run(ri::table<SquaredNormNormalizer<true>>(), clause);
+    EXPECT_EQ(r.outcome, engine::Outcome::not_supported) << clause << ": " << r.note << " " << r.worst_input;
+    ASSERT_EQ(r.excluded.count("norm_in_range"), 1u) << clause;
+    EXPECT_GT(r.excluded.at("norm_in_range"), 0u);
+  }
+  // Ordinary and zero inputs stay inside it: NORM-1 and EDGE-6 are judged as before.
+  EXPECT_EQ(run(ri::table<SquaredNormNormalizer<true>>(), "NORM-1").outcome, engine::Outcome::pass);
+  const auto zero = run(ri::table<SquaredNormNormalizer<true>>(), "EDGE-6");
+  EXPECT_EQ(zero.excluded.count("norm_in_range"), 0u);
+}
+
+namespace {
+/// to_axis as v/|v|, which never reads w (the axis is the same for every w: CQRlib), and to_angle
+/// as glm::angle, 2 acos(w), which never reads v (the angle depends on |v| once q is not unit).
+/// HideNaNInV: a NaN in v gives the axis (1, 0, 0) instead of carrying it, and to_angle checks
+/// every component (so that only the axis can fail).
+template <bool HideNaNInV>
+struct ReadsPartOfQ : Normalizer<0> {
+  static ri::Status to_axis(const Q& q, V& axis) {
+    const double n = std::hypot(q[0], q[1], q[2]);
+    if (std::isnan(n) && HideNaNInV) axis = {1, 0, 0};
+    else if (n == 0 || std::isinf(n)) return ri::Status::domain_error;
+    else axis = {q[0] / n, q[1] / n, q[2] / n};
+    return ri::Status::ok;
+  }
+  static ri::Status to_angle(const Q& q, double& angle) {
+    if (std::isnan(q[3]) || std::isinf(q[3])) return ri::Status::domain_error;
+    if (HideNaNInV && !std::isfinite(q[0] + q[1] + q[2])) return ri::Status::domain_error;
+    angle = 2 * std::acos(std::clamp(q[3], -1.0, 1.0));
+    return ri::Status::ok;
+  }
+};
+}  // namespace
+
+TEST(Engine, AnAnswerThatDoesNotDependOnTheNonFiniteComponentIsAcceptable) {
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("ACC-1");
+  // The axis of (x, y, z, NaN) is v/|v| whatever w stands for: ACCEPTABLE (nonfinite_irrelevant).
+  // The angle 2 acos(w) of (NaN, y, z, w) depends on the x the NaN stands for: a FAIL.
+  const auto r = run(ri::table<ReadsPartOfQ<false>>(), "EDGE-7");
+  EXPECT_EQ(r.outcome, engine::Outcome::fail);
+  EXPECT_EQ(r.worst_op, "to_angle") << r.worst_detail << " " << r.worst_input;
+  bool irrelevant = false;
+  for (const auto& a : r.acceptable) irrelevant = irrelevant || (a.convention == "nonfinite_irrelevant" && a.op == "to_axis");
+  EXPECT_TRUE(irrelevant);
+  // An axis for a NaN in v, which it depends on, is no such answer.
+  const auto hidden = run(ri::table<ReadsPartOfQ<true>>(), "EDGE-7");
+  EXPECT_EQ(hidden.outcome, engine::Outcome::fail);
+  EXPECT_EQ(hidden.worst_op, "to_axis") << hidden.worst_detail << " " << hidden.worst_input;
+}

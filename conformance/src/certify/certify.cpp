@@ -13,6 +13,7 @@
 
 #include <rotorcert/certify/platform.hpp>
 #include <rotorcert/certify/wire.hpp>
+#include <rotorcert/engine/declarations.hpp>
 #include <rotorcert/registry.hpp>
 
 namespace rotorcert::certify {
@@ -120,6 +121,10 @@ std::vector<Target> probe_plugin(const std::string& given_path, const ChildLimit
     for (const rc_impl* t : plugin->tables()) {
       if (const std::string problem = impl::validate_table(*t); !problem.empty())
         throw std::runtime_error("invalid table: " + problem);
+      if (const std::string problem = engine::declaration_problem(
+              engine::declarations_of(*t), [&](const std::string& op) { return engine::supports(*t, op); });
+          !problem.empty())
+        throw std::runtime_error("invalid table: " + std::string(t->name) + ": DECL-1: " + problem);
       tables.push_back(to_json(table_info(*t, "plugin", path)));
     }
     return tables.dump();

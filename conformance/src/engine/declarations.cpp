@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <rotorcert/engine/cases.hpp>
 #include <rotorcert/engine/runner.hpp>
@@ -377,6 +378,27 @@ std::vector<Precondition> build_preconditions() {
                          if (abs(block_norm(c.inputs[a], j, 4) - Real(1)) > unit_band(f)) return false;
                    return true;
                  }});
+  // A squared norm that overflows or underflows in the format: Eigen's normalized() documents the
+  // copy of its input where norm() == 0, which an underflowed squared norm reaches, and offers
+  // stableNormalized() for "avoiding underflow and overflow" (Dot.h). Zero itself is EDGE-6's.
+  all.push_back({"norm_in_range",
+                 "every quaternion input's squared norm is 0 or lies between the format's smallest normal number and "
+                 "its largest finite number (x^2 + y^2 + z^2 + w^2 neither underflows nor overflows)",
+                 [](const AbiOp& op) { return has_stride(op, 4); },
+                 [](const AbiOp& op, const Case& c, ref::Format f) {
+                   if (!all_finite(c)) return false;
+                   const Real lowest = ref::format_min_normal<Real>(f);
+                   const Real highest = f == ref::Format::binary32 ? Real(std::numeric_limits<float>::max())
+                                                                   : Real(std::numeric_limits<double>::max());
+                   for (std::size_t a = 0; a < op.inputs.size(); ++a)
+                     if (op.inputs[a].stride == 4)
+                       for (std::size_t j = 0; j + 4 <= c.inputs[a].size(); j += 4) {
+                         const Real n = block_norm(c.inputs[a], j, 4);
+                         const Real n2 = n * n;
+                         if (n2 != 0 && (n2 < lowest || n2 > highest)) return false;
+                       }
+                   return true;
+                 }});
   all.push_back({"unit_dual_quaternion", "every dual quaternion input is unit: |real| = 1 and real . dual = 0 (within 64 eps)",
                  [](const AbiOp& op) { return has_stride(op, 8); },
                  [](const AbiOp& op, const Case& c, ref::Format f) {
@@ -731,6 +753,59 @@ std::vector<AcceptableConvention> build_conventions() {
     a.bars = kLimitBars;
     all.push_back(std::move(a));
   }
+  // EDGE-7 where the answer does not depend on the non-finite components: the axis v/|v| is the
+  // same for every w, so CQRlib's axis of (x, y, z, NaN) is the answer for any value the NaN could
+  // have stood for. IEEE 754 (9.2.1) answers so too: hypot(Inf, NaN) = Inf, pow(NaN, 0) = 1. Checked
+  // by putting several finite values in their place; an output that is the answer for all of
+  // them is ACCEPTABLE (class eps16, as nonfinite_limit), one that depends on them stays a FAIL.
+  {
+    AcceptableConvention a{"nonfinite_irrelevant",
+                           "a non-finite input gives the op's answer for every finite value put in place of its non-finite "
+                           "components (the answer does not depend on them), instead of DOMAIN_ERROR",
+                           false, [](const AbiOp&) { return true; },
+                           [](const AbiOp&, const Case& c, ref::Format) { return !all_finite(c); },
+                           [](const AbiOp& op, const Case& c, const Values& got, const Values&, ref::Format f) -> std::optional<Real> {
+                             if (all_finite(c) || some_output_nonfinite(got)) return std::nullopt;
+                             Real worst(0);
+                             int answered = 0;
+                             for (const double v : {0.0, 1.0, -1.0, 2.0, -0.5}) {
+                               Case sub = c;
+                               for (auto& arr : sub.inputs)
+                                 for (Real& x : arr)
+                                   if (!mpfr::isfinite(x)) x = Real(v);
+                               const std::optional<Real> e = error_as_answer_to(op, sub, got, f);
+                               if (!e) continue;  // outside the domain for this value (a zero quaternion)
+                               ++answered;
+                               if (mpfr::isnan(*e)) return std::nullopt;
+                               worst = std::max(worst, *e);
+                             }
+                             if (answered < 2) return std::nullopt;
+                             return worst;
+                           },
+                           true};
+    a.bars = kLimitBars;
+    all.push_back(std::move(a));
+  }
+  // EDGE-7 on one output of a combined call: a library without an angle-only (axis-only) query
+  // gives its users the angle (axis) as one output of the call its to_axis_angle makes (gl-matrix's
+  // getAxisAngle returns 2 acos(w) and writes the axis). A NaN in x, y, z leaves that angle finite
+  // and reaches the axis: judged alone, the half hides what the whole call shows. Declared only
+  // (DECL-1 requires to_axis_angle supported, where the whole call is judged on the same kind
+  // of input, so hiding the NaN from both outputs still FAILs there).
+  {
+    AcceptableConvention a{"output_of_to_axis_angle",
+                           "a non-finite input gives status OK with a finite output of an op that is one output of the call "
+                           "to_axis_angle makes (declared; that call is judged whole under to_axis_angle)",
+                           true, [](const AbiOp& op) { return op.name == "to_angle" || op.name == "to_axis"; },
+                           [](const AbiOp&, const Case& c, ref::Format) { return !all_finite(c); },
+                           [](const AbiOp&, const Case& c, const Values&, const Values&, ref::Format) -> std::optional<Real> {
+                             if (all_finite(c)) return std::nullopt;
+                             return Real(0);
+                           },
+                           true};
+    a.bars = ref::Bars{0, 0};
+    all.push_back(std::move(a));
+  }
   // COMPOSE-1 and DQ-2 are defined on the unnormalised input: with a zero factor (real part) the
   // product of the algebra exists, and a general quaternion library returns it.
   all.push_back({"algebraic_product",
@@ -779,6 +854,39 @@ const Precondition* violated_precondition(const Declarations& d, const AbiOp& op
   for (const Precondition& p : preconditions())
     if (d.has_precondition(op.name, p.id) && p.applies(op) && !p.holds(op, c, f)) return &p;
   return nullptr;
+}
+
+std::string declaration_problem(const Declarations& d, const std::function<bool(const std::string& op)>& supported) {
+  // An op of the ABI, or "*" (every op the declaration applies to).
+  const auto op_of = [](const std::string& decl) -> std::pair<std::string, const AbiOp*> {
+    const std::string op = decl.substr(0, decl.find(':'));
+    return {op, op == "*" ? nullptr : find_abi_op(op)};
+  };
+  for (const std::string& decl : d.preconditions) {
+    const auto [name, op] = op_of(decl);
+    const std::string id = decl.substr(decl.find(':') + 1);
+    const Precondition* p = find_precondition(id);
+    if (p == nullptr) return "precondition \"" + decl + "\": no DECL-1 precondition \"" + id + "\"";
+    if (name != "*" && op == nullptr) return "precondition \"" + decl + "\": no ABI op \"" + name + "\"";
+    if (op != nullptr && !p->applies(*op)) return "precondition \"" + decl + "\": " + id + " does not apply to " + name;
+  }
+  for (const std::string& decl : d.conventions) {
+    const auto [name, op] = op_of(decl);
+    const std::string id = decl.substr(decl.find(':') + 1);
+    bool known = false, applies = false;
+    for (const AcceptableConvention& a : acceptable_conventions())
+      if (a.id == id) {
+        known = true;
+        applies = applies || op == nullptr || a.applies(*op);
+      }
+    if (!known) return "convention \"" + decl + "\": no ACC-1 convention \"" + id + "\"";
+    if (name != "*" && op == nullptr) return "convention \"" + decl + "\": no ABI op \"" + name + "\"";
+    if (!applies) return "convention \"" + decl + "\": " + id + " does not apply to " + name;
+    // The combined call is judged whole under to_axis_angle: without it, nothing would be.
+    if (id == "output_of_to_axis_angle" && !supported("to_axis_angle"))
+      return "convention \"" + decl + "\": the table does not support to_axis_angle, the call it names";
+  }
+  return {};
 }
 
 const std::vector<AcceptableConvention>& acceptable_conventions() {

@@ -47,6 +47,11 @@ struct Declarations {
 /// A table's declarations (empty for an ABI version 1 table).
 Declarations declarations_of(const rc_impl& table);
 
+/// Why a table's declarations cannot be honoured, or "" if they can: an id DECL-1 or ACC-1 does
+/// not define, an op the ABI lacks or the id does not apply to, or an output_of_to_axis_angle
+/// declaration of a table without to_axis_angle (`supported`: whether the table has an op).
+std::string declaration_problem(const Declarations& d, const std::function<bool(const std::string& op)>& supported);
+
 /// DECL-1: one kind of documented precondition.
 struct Precondition {
   std::string id;           // stable: "unit_axis", "t_in_unit_interval", ...
