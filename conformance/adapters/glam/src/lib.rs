@@ -64,7 +64,15 @@ static PRECONDITIONS: StrList<12> = str_list![
 ];
 
 /// Conventions glam chose where the spec allows several answers (citations in adapter.json).
-static CONVENTIONS: StrList<4> = str_list!["from_matrix:sign", "to_axis_angle:identity_axis", "to_axis:identity_axis"];
+/// to_angle and to_axis are the two outputs of to_axis_angle, glam's one call for either: EDGE-7
+/// judges that call whole (ACC-1 output_of_to_axis_angle).
+static CONVENTIONS: StrList<6> = str_list![
+    "from_matrix:sign",
+    "to_axis_angle:identity_axis",
+    "to_axis:identity_axis",
+    "to_angle:output_of_to_axis_angle",
+    "to_axis:output_of_to_axis_angle",
+];
 
 const LEVELS: u32 = RC_LEVEL_CORE | RC_LEVEL_INTERP | RC_LEVEL_ROBUST;
 /// The version string of both tables: the pinned crate and how it is built.
