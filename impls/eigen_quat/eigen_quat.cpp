@@ -86,8 +86,11 @@ struct EigenQuat {
   //     is assumed to be rotation matrix"; AngleAxis.h:23 "the axis vector must be normalized";
   //     AngleAxis.h:162 AngleAxis = quaternion "Set *this from a unit quaternion" (angle() and axis()
   //     read from it), one of the operations :253 speaks of.
+  //   Core/Dot.h:113-116 normalized() "If the input vector is too small (i.e., this->norm()==0),
+  //     then this function returns a copy of the input", and :153-158 stableNormalized() "while
+  //     avoiding underflow and overflow": normalize's squared norm must not under- or overflow.
   static constexpr const char* const preconditions[] = {
-      "apply_vector:unit_quaternion", "apply_bivector:unit_quaternion", "to_matrix:unit_quaternion",
+      "normalize:norm_in_range", "apply_vector:unit_quaternion", "apply_bivector:unit_quaternion", "to_matrix:unit_quaternion",
       "slerp:unit_quaternion", "slerp:t_in_unit_interval", "from_matrix:rotation_matrix", "from_axis_angle:unit_axis",
       "to_axis_angle:unit_quaternion", "to_angle:unit_quaternion", "to_axis:unit_quaternion",
       // nlerp and QLB are glue with Eigen's operations (Eigen has neither); they take the

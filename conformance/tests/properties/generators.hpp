@@ -417,6 +417,11 @@ inline Case draw(const engine::AbiOp& op, Family family, ref::Format f) {
           c.inputs[a][j] = m == 0 ? Real(-0.0) : Real(std::ldexp(double(m), lowest + *upto(12)));
           if (*upto(1)) c.inputs[a][j] = -c.inputs[a][j];
         }
+      // One in four: a subnormal vector part beside w = +-1, a rotation within a few ulp of +-1
+      // whose axis B/|B| must still be accurate (the engine's EDGE-8 family has it too).
+      if (*upto(3) == 3)
+        for (std::size_t a : arrays_with_stride(op, 4))
+          for (std::size_t j = 3; j < c.inputs[a].size(); j += 4) c.inputs[a][j] = Real(*upto(1) ? 1.0 : -1.0);
       break;
     }
     case F::near_identity: {
