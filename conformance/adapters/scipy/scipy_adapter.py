@@ -76,7 +76,7 @@ skin_dual_quaternion.
 
 A call that never returns: Rotation.from_matrix hands a matrix with an infinite entry (whose
 determinant is +inf or NaN, so its determinant check lets it through) to numpy.linalg.svd, and
-LAPACK's SVD of some such matrices never returns (EDGE-7 vector "-Inf in m"). from_matrix calls
+LAPACK's SVD of some such matrices never returns (EDGE-7 vectors "-Inf in m[i]"). from_matrix calls
 whose matrix has a non-finite entry therefore run in a forked child limited to HANG_CPU_S of CPU
 time (SIGPROF ends it); a child that had to be stopped raises rotorcert_vectors.DidNotReturn, which
 is reported with raw status byte 255 (a FAIL, conformance/VECTORS.md): neither OK nor a refusal.
