@@ -589,15 +589,29 @@ struct RotorOps {
     out = canonical_sign(Conv::out(Conv::in(PhiReadout::out(*r))));
     return ok;
   }
+  /// B/|B| of q's rotor from q's vector part alone, as the bivector of the rotor of the half turn
+  /// (x, y, z, 0). q/|q| flushes a vector part below 2^-1074 |q| (2^-149 in binary32) to zero and
+  /// keeps a few bits of one near it, beside w ~ -|q| a rotation just short of a full turn whose
+  /// axis is still v/|v| (fuzz/corpus/rotation_parts/regression-rotor-tiny-vector-part-*).
+  /// Precondition: the vector part is nonzero.
+  static V plane_of(const Q& q) {
+    const Rotor3<S> half_turn = Conv::in(Q{q[0], q[1], q[2], S(0)});
+    return {half_turn.e23, half_turn.e31, half_turn.e12};
+  }
+  static bool zero_vector_part(const Q& q) { return q[0] == 0 && q[1] == 0 && q[2] == 0; }
+
   /// The paper's eq. 5 read backwards: R = cos(theta/2) - I u sin(theta/2), so
   /// theta = 2 atan2(|B|, s) in [0, 2 pi] and u = -B/|B| (B's coefficients as a vector).
   static Status to_axis_angle(const Q& q, S& angle, V& axis) {
     if (!is_rotation(q)) return bad;
     const Rotor3<S> r = Conv::in(q);
-    const S n = norm3(r.e23, r.e31, r.e12);
-    angle = S(2) * std::atan2(n, r.s);
-    if (n == 0) axis = {S(0), S(0), S(1)};
-    else axis = unit_vector(V{-r.e23, -r.e31, -r.e12});
+    angle = S(2) * std::atan2(norm3(r.e23, r.e31, r.e12), r.s);
+    if (zero_vector_part(q)) {
+      axis = {S(0), S(0), S(1)};
+    } else {
+      const V b = plane_of(q);
+      axis = {-b[0], -b[1], -b[2]};
+    }
     return ok;
   }
   /// ABI version 3, AXANG-3 and AXANG-4: the two halves of to_axis_angle.
@@ -612,21 +626,22 @@ struct RotorOps {
   /// ABI version 3, SQRT-1: sqrt(R) = (1 + R)/|1 + R| for the unit rotor R = s + B of q, half the
   /// angle about the same plane. For s < 0, 1 + s = |B|^2/(1 - s) (R ~R = 1) without cancellation,
   /// and the common factor |B| is divided out first: (|B|/(1 - s), B/|B|), normalised. R = -1 has
-  /// every unit bivector as a root: -e12, the quaternion +z (LOG-2's axis).
+  /// every unit bivector as a root: -e12, the quaternion +z (LOG-2's axis). The plane B/|B| is
+  /// plane_of(q): the root of (2^-815 (1, -1, 1), -2^760) is about (1, -1, 1)/sqrt(3), not +z.
   static Status sqrt(const Q& q, Q& out) {
     if (!is_rotation(q)) return bad;
     const Rotor3<S> r = Conv::in(q);
-    const S n = norm3(r.e23, r.e31, r.e12);
     if (r.s >= 0) {
       out = Conv::out(normalized(Rotor3<S>{S(1) + r.s, r.e23, r.e31, r.e12}));
       return ok;
     }
-    if (n == 0) {
+    if (zero_vector_part(q)) {
       out = Conv::out(Rotor3<S>{S(0), S(0), S(0), S(-1)});
       return ok;
     }
-    const V u = unit_vector(V{r.e23, r.e31, r.e12});
-    out = Conv::out(normalized(Rotor3<S>{n / (S(1) - r.s), u[0], u[1], u[2]}));
+    const S n = norm3(r.e23, r.e31, r.e12);
+    const V b = plane_of(q);
+    out = Conv::out(normalized(Rotor3<S>{n / (S(1) - r.s), b[0], b[1], b[2]}));
     return ok;
   }
   /// Eq. 5: R = exp(-I u theta/2) = cos(theta/2) - I u sin(theta/2), u = axis/|axis|.
@@ -639,7 +654,16 @@ struct RotorOps {
   }
   static Status log(const Q& q, V& out) {
     if (!is_rotation(q)) return bad;
-    out = Conv::pure_out(rotor::log(Conv::in(q)));
+    const Rotor3<S> r = Conv::in(q);
+    V l = rotor::log(r);
+    if (r.s < 0 && !zero_vector_part(q)) {
+      // atan2(|B|, s) B/|B| with the plane from plane_of: near a full turn |log| ~ pi, and a B
+      // that q/|q| lost would give LOG-2's -pi e12 instead of pi times q's own axis.
+      const S angle = norm3(l[0], l[1], l[2]);
+      const V b = plane_of(q);
+      l = {angle * b[0], angle * b[1], angle * b[2]};
+    }
+    out = Conv::pure_out(l);
     return ok;
   }
   static Status exp(const V& v, Q& out) {
