@@ -655,15 +655,15 @@ struct RotorOps {
   static Status log(const Q& q, V& out) {
     if (!is_rotation(q)) return bad;
     const Rotor3<S> r = Conv::in(q);
-    V l = rotor::log(r);
-    if (r.s < 0 && !zero_vector_part(q)) {
-      // atan2(|B|, s) B/|B| with the plane from plane_of: near a full turn |log| ~ pi, and a B
-      // that q/|q| lost would give LOG-2's -pi e12 instead of pi times q's own axis.
-      const S angle = norm3(l[0], l[1], l[2]);
-      const V b = plane_of(q);
-      l = {angle * b[0], angle * b[1], angle * b[2]};
+    if (r.s >= 0 || zero_vector_part(q)) {
+      out = Conv::pure_out(rotor::log(r));
+      return ok;
     }
-    out = Conv::pure_out(l);
+    // atan2(|B|, s) B/|B| with the plane from plane_of: near a full turn |log| ~ pi, and a B that
+    // q/|q| lost would give LOG-2's -pi e12 instead of pi times q's own axis.
+    const S angle = std::atan2(norm3(r.e23, r.e31, r.e12), r.s);
+    const V b = plane_of(q);
+    out = Conv::pure_out(V{angle * b[0], angle * b[1], angle * b[2]});
     return ok;
   }
   static Status exp(const V& v, Q& out) {

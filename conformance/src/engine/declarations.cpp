@@ -857,22 +857,27 @@ const Precondition* violated_precondition(const Declarations& d, const AbiOp& op
 }
 
 std::string declaration_problem(const Declarations& d, const std::function<bool(const std::string& op)>& supported) {
-  // An op of the ABI, or "*" (every op the declaration applies to).
-  const auto op_of = [](const std::string& decl) -> std::pair<std::string, const AbiOp*> {
-    const std::string op = decl.substr(0, decl.find(':'));
-    return {op, op == "*" ? nullptr : find_abi_op(op)};
+  // "op:id": the op's name, its ABI op (nullptr for "*", every op the id applies to, or for an
+  // unknown name) and the id.
+  struct Parsed {
+    std::string name;
+    const AbiOp* op;
+    std::string id;
+  };
+  const auto parse = [](const std::string& decl) {
+    const std::size_t colon = decl.find(':');
+    const std::string name = decl.substr(0, colon);
+    return Parsed{name, name == "*" ? nullptr : find_abi_op(name), decl.substr(colon + 1)};
   };
   for (const std::string& decl : d.preconditions) {
-    const auto [name, op] = op_of(decl);
-    const std::string id = decl.substr(decl.find(':') + 1);
+    const auto [name, op, id] = parse(decl);
     const Precondition* p = find_precondition(id);
     if (p == nullptr) return "precondition \"" + decl + "\": no DECL-1 precondition \"" + id + "\"";
     if (name != "*" && op == nullptr) return "precondition \"" + decl + "\": no ABI op \"" + name + "\"";
     if (op != nullptr && !p->applies(*op)) return "precondition \"" + decl + "\": " + id + " does not apply to " + name;
   }
   for (const std::string& decl : d.conventions) {
-    const auto [name, op] = op_of(decl);
-    const std::string id = decl.substr(decl.find(':') + 1);
+    const auto [name, op, id] = parse(decl);
     bool known = false, applies = false;
     for (const AcceptableConvention& a : acceptable_conventions())
       if (a.id == id) {

@@ -132,9 +132,7 @@ Grading grade(const spec::Spec& spec, const VectorSet& set, const ResultsFile& r
 
   const engine::Declarations declared{{results.preconditions.begin(), results.preconditions.end()},
                                       {results.conventions.begin(), results.conventions.end()}};
-  if (const std::string problem = engine::declaration_problem(
-          declared, [&](const std::string& op) { return ops_with_results.count(op) && supported(op); });
-      !problem.empty())
+  if (const std::string problem = engine::declaration_problem(declared, supported); !problem.empty())
     throw VectorsError(results.file, "/implementation", "DECL-1: " + problem);
   std::vector<std::string> graded;  // clauses with at least one result judged
   std::vector<engine::ClauseResult> all;
