@@ -601,7 +601,7 @@ OracleMode oracle_mode() {
 /// With ROTORCERT_FUZZ_STATS set: per op, how many elements were judged how (printed at exit),
 /// to see how much of what a harness generates is judged in full.
 struct Stats {
-  std::map<std::string, std::array<std::size_t, 3>> counts;
+  std::map<std::string, std::array<std::size_t, 4>> counts;  // by Judge; [3]: no result needed it
   std::map<std::string, std::size_t> fast;      // elements the fast level judged without MPFR
   std::map<std::string, std::size_t> memo_hits;  // elements whose judgement came from the memo
   ~Stats() {
@@ -611,8 +611,9 @@ struct Stats {
     };
     for (const auto& [op, c] : counts)
       std::fprintf(stderr,
-                   "stats: %-28s everything %8zu  status only %8zu  nothing %8zu  without MPFR %8zu  from the memo %8zu\n",
-                   op.c_str(), c[0], c[1], c[2], at(fast, op), at(memo_hits, op));
+                   "stats: %-28s everything %8zu  status only %8zu  nothing %8zu  not needed %8zu  without MPFR %8zu  "
+                   "from the memo %8zu\n",
+                   op.c_str(), c[0], c[1], c[2], c[3], at(fast, op), at(memo_hits, op));
   }
 };
 Stats& stats() {
@@ -628,7 +629,7 @@ Stats& stats() {
 /// result may depend on an element's place in the batch (SIMD lanes and tails); what a table
 /// returns is judged again only when its bits differ from results already cleared.
 struct ElementJudgement {
-  Judge judge = Judge::nothing;
+  std::optional<Judge> judge;  // how_to_judge's answer, once a table's result has needed it
   ref::Status status = ref::Status::ok;
   std::optional<engine::FastReference> fast;
   std::optional<engine::FastCase> fast_case;
@@ -792,11 +793,12 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
   const std::string tol_name = fuzz_tolerance(op.name);
   const spec::ToleranceClass& tc = s.lookup(tol_name);
 
-  // Per element: the reference status and how much is judged (the same for every table), from
-  // the fast level where it decides; the MPFR reference is computed only where it is needed.
+  // Per element: the reference status, from the fast level where it decides; the MPFR reference
+  // is computed only where it is needed. How much of an element is judged (its perturbations: most
+  // of an element's cost) is decided only when a table's result needs it (judge_of below).
   const OracleMode mode = oracle_mode();
-  std::vector<Judge> judge(d.n);
-  std::vector<ref::Status> status(d.n);
+  std::vector<std::optional<Judge>> judge(d.n);
+  std::vector<ref::Status> status(d.n, ref::Status::ok);
   std::vector<std::optional<engine::FastReference>> fast(d.n);
   std::vector<std::optional<engine::FastCase>> fast_case(d.n);  // per element, shared by every table
   std::vector<std::optional<engine::ReferenceResult>> exact(d.n);
@@ -809,40 +811,13 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
   const bool use_memo = mode == OracleMode::fast && memo_enabled();
   std::vector<std::string> keys(use_memo ? d.n : 0);  // (keys[e] is moved from only after its last use)
   std::vector<bool> remembered(d.n, false);
-  for (std::size_t e = 0; e < d.n; ++e) {
-    if (use_memo) {
-      keys[e] = JudgementMemo::key(d, e);
-      if (const ElementJudgement* m = memo().find(keys[e])) {
-        judge[e] = m->judge;
-        status[e] = m->status;
-        fast[e] = m->fast;
-        fast_case[e] = m->fast_case;
-        exact[e] = m->exact;
-        remembered[e] = true;
-        ++stats().counts[op.name][static_cast<std::size_t>(judge[e])];
-        ++stats().memo_hits[op.name];
-        continue;
-      }
-    }
+
+  // how_to_judge of element e at the fast level where it decides, else MPFR's; in "both" mode
+  // both, and a difference is a finding.
+  auto decide = [&](std::size_t e) {
     std::optional<Judge> j;
-    engine::BoundedValues in;
-    if (op.name == "from_matrix" && engine::numerically_singular(d.exact_case(e).inputs.at(0), f)) {
-      j = Judge::nothing;  // how_to_judge's first test, on the input alone: no reference needed
-    } else if (mode != OracleMode::mpfr) {
-      in = bounded_inputs(d, e);
-      fast[e] = engine::fast_reference(op, in, d.k);
-      // Undecided (a branch the element's own bound cannot settle): its MPFR reference is the
-      // fast level's want, so that the perturbations, most of which the bounds still settle, stay
-      // at the fast level, and so do the tables' verdicts.
-      if (!fast[e]) {
-        if (fuzz_debug())
-          std::fprintf(stderr, "fast oracle: %s: the element's reference is undecided; its MPFR reference is the want: %s\n",
-                       op.name.c_str(), engine::describe_inputs(op, d.exact_case(e), f).c_str());
-        fast[e] = engine::fast_reference_from(op, mpfr_want(e));
-      }
-    }
     if (fast[e]) {
-      fast_case[e] = engine::fast_case(op, tc, d.exact_case(e), f);
+      const engine::BoundedValues in = bounded_inputs(d, e);
       j = how_to_judge_fast(op, tc, d.exact_case(e), f, in, *fast[e], fast_case[e],
                             [&]() -> const engine::ReferenceResult& { return mpfr_want(e); });
     }
@@ -855,11 +830,49 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
         oracle_disagreement(d, e, "the reference status");
       j = m;
     }
-    judge[e] = *j;
-    // (Read only where something is judged: a numerically singular matrix needs no reference.)
-    if (judge[e] != Judge::nothing) status[e] = fast[e] ? fast[e]->status : mpfr_want(e).status;
-    ++stats().counts[op.name][static_cast<std::size_t>(judge[e])];
-    if (fast[e] && j && !exact[e]) ++stats().fast[op.name];
+    return *j;
+  };
+  // Lazy in the fast mode: a result surely within the loose bar (or, for an ill-conditioned
+  // element, with status OK) is no finding whichever way the element is judged, so only a result
+  // that may be one asks for the judgement.
+  auto judge_of = [&](std::size_t e) {
+    if (!judge[e]) judge[e] = decide(e);
+    return *judge[e];
+  };
+
+  for (std::size_t e = 0; e < d.n; ++e) {
+    if (use_memo) {
+      keys[e] = JudgementMemo::key(d, e);
+      if (const ElementJudgement* m = memo().find(keys[e])) {
+        judge[e] = m->judge;
+        status[e] = m->status;
+        fast[e] = m->fast;
+        fast_case[e] = m->fast_case;
+        exact[e] = m->exact;
+        remembered[e] = true;
+        ++stats().memo_hits[op.name];
+        continue;
+      }
+    }
+    if (op.name == "from_matrix" && engine::numerically_singular(d.exact_case(e).inputs.at(0), f)) {
+      judge[e] = Judge::nothing;  // how_to_judge's first test, on the input alone: no reference needed
+      continue;
+    }
+    if (mode != OracleMode::mpfr) {
+      fast[e] = engine::fast_reference(op, bounded_inputs(d, e), d.k);
+      // Undecided (a branch the element's own bound cannot settle): its MPFR reference is the
+      // fast level's want, so that the perturbations, most of which the bounds still settle, stay
+      // at the fast level, and so do the tables' verdicts.
+      if (!fast[e]) {
+        if (fuzz_debug())
+          std::fprintf(stderr, "fast oracle: %s: the element's reference is undecided; its MPFR reference is the want: %s\n",
+                       op.name.c_str(), engine::describe_inputs(op, d.exact_case(e), f).c_str());
+        fast[e] = engine::fast_reference_from(op, mpfr_want(e));
+      }
+    }
+    if (fast[e]) fast_case[e] = engine::fast_case(op, tc, d.exact_case(e), f);
+    if (!fast[e] || mode != OracleMode::fast) judge_of(e);  // MPFR alone, or both levels everywhere
+    status[e] = fast[e] ? fast[e]->status : mpfr_want(e).status;
   }
 
   // EXP-2's class and, per element, its fast bars: the same for every table that runs the round trip.
@@ -901,27 +914,30 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
       if (!declared.preconditions.empty() && engine::violated_precondition(declared, op, d.exact_case(e), f)) continue;
       got_key[e] = got.key(e);
       if (is_cleared(e, got_key[e])) continue;
-      if (judge[e] == Judge::everything) {
-        const Observed got_e = got.observed(e);
-        // Surely within the loose bar is never a FAIL: MPFR's verdict is PASS or QUALITY_WARNING,
-        // which an acceptable convention can only turn into an ACCEPTABLE PASS.
-        const auto fv = fast[e] && fast_case[e] ? engine::fast_verdicts(op, *fast_case[e], got_e, *fast[e]) : std::nullopt;
-        if (fv && fv->worst != ref::Verdict::fail) {
-          if (mode == OracleMode::both &&
-              engine::judge_case_against(op, tc, d.exact_case(e), got_e, f, mpfr_want(e), false).verdict == ref::Verdict::fail)
-            oracle_disagreement(d, e, std::string("the verdict on ") + t->name + ": fast not FAIL, MPFR FAIL");
-        } else {
+      const Observed got_e = got.observed(e);
+      // Surely within the loose bar is never a FAIL: MPFR's verdict is PASS or QUALITY_WARNING,
+      // which an acceptable convention can only turn into an ACCEPTABLE PASS. With status OK it is
+      // no finding where only the status is judged either (fast_verdicts needs status OK).
+      const auto fv = fast[e] && fast_case[e] ? engine::fast_verdicts(op, *fast_case[e], got_e, *fast[e]) : std::nullopt;
+      const bool surely_within = fv && fv->worst != ref::Verdict::fail;
+      if (mode == OracleMode::both && surely_within && judge_of(e) == Judge::everything &&
+          engine::judge_case_against(op, tc, d.exact_case(e), got_e, f, mpfr_want(e), false).verdict == ref::Verdict::fail)
+        oracle_disagreement(d, e, std::string("the verdict on ") + t->name + ": fast not FAIL, MPFR FAIL");
+      if (!surely_within) {
+        const Judge j = judge_of(e);
+        if (j == Judge::nothing) continue;
+        if (j == Judge::everything) {
           const engine::CaseVerdict v = engine::judge_case_against(op, tc, d.exact_case(e), got_e, f, mpfr_want(e), false);
           if (v.verdict == ref::Verdict::fail) {
             finding(*t, e, "FAIL against the reference", tol_name, v);
             continue;
           }
+        } else if (got.rc != 0 || got.status[e] != RC_OK) {
+          finding(*t, e, "ill-conditioned input inside the domain: status OK required", tol_name,
+                  {ref::Verdict::fail, NAN,
+                   "call returned " + std::to_string(got.rc) + ", status byte " + std::to_string(got.status[e])});
+          continue;
         }
-      } else if (judge[e] == Judge::status_only && (got.rc != 0 || got.status[e] != RC_OK)) {
-        finding(*t, e, "ill-conditioned input inside the domain: status OK required", tol_name,
-                {ref::Verdict::fail, NAN,
-                 "call returned " + std::to_string(got.rc) + ", status byte " + std::to_string(got.status[e])});
-        continue;
       }
       clear(e, got_key[e]);
     }
@@ -933,7 +949,7 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
       const spec::ToleranceClass& rt_tc = s.lookup(rt_name);
       for (std::size_t e = 0; e < d.n; ++e) {
         if (status[e] != ref::Status::ok || judge[e] == Judge::nothing) continue;
-        std::string rt_key = got_key[e] + back.key(e);
+        std::string rt_key = got.key(e) + back.key(e);
         if (is_cleared(e, rt_key)) continue;
         const Observed got_e = got.observed(e), back_e = back.observed(e);
         // Surely not a FAIL at the fast level: MPFR's distance is not needed (in "both" mode it
@@ -941,10 +957,10 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
         const auto& fc = round_trip_case[e];
         const auto fv = fc ? engine::fast_round_trip_verdicts(*fc, d.exact_case(e), got_e, back_e) : std::nullopt;
         if (fv && fv->worst != ref::Verdict::fail) {
-          if (mode == OracleMode::both &&
+          if (mode == OracleMode::both && judge_of(e) != Judge::nothing &&
               engine::judge_round_trip(rt_tc, d.exact_case(e), got_e, back_e, f).verdict == ref::Verdict::fail)
             oracle_disagreement(d, e, std::string("EXP-2 on ") + t->name + ": fast not FAIL, MPFR FAIL");
-        } else {
+        } else if (judge_of(e) != Judge::nothing) {
           const engine::CaseVerdict v = engine::judge_round_trip(rt_tc, d.exact_case(e), got_e, back_e, f);
           if (v.verdict == ref::Verdict::fail) {
             engine::CaseVerdict shown = v;
@@ -959,14 +975,21 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
       }
     }
   }
-  // Remembered after the tables: an MPFR reference they needed is kept too.
+  // Per element: how it was judged ("not needed": no result asked), and whether without MPFR.
+  for (std::size_t e = 0; e < d.n; ++e) {
+    ++stats().counts[op.name][judge[e] ? static_cast<std::size_t>(*judge[e]) : 3];
+    if (!remembered[e] && fast[e] && !exact[e]) ++stats().fast[op.name];
+  }
+  // Remembered after the tables: an MPFR reference and a judgement they needed are kept too.
   if (use_memo)
     for (std::size_t e = 0; e < d.n; ++e) {
       if (!remembered[e])
         memo().put(std::move(keys[e]), ElementJudgement{judge[e], status[e], std::move(fast[e]), std::move(fast_case[e]),
                                                         std::move(exact[e]), std::move(new_cleared[e])});
-      else if (ElementJudgement* m = memo().find(keys[e]); m && exact[e] && !m->exact)
-        m->exact = std::move(exact[e]);  // (an entry the loop above evicted is simply not updated)
+      else if (ElementJudgement* m = memo().find(keys[e])) {  // (an entry the loop above evicted is not updated)
+        if (exact[e] && !m->exact) m->exact = std::move(exact[e]);
+        if (judge[e] && !m->judge) m->judge = judge[e];
+      }
     }
   return run;
 }

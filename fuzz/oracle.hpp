@@ -29,6 +29,9 @@
 // Headroom: inputs other than quaternions and dual quaternions (which EDGE-5 requires at every
 // scale), the translation 2|d|/|r| of a dual quaternion, and the exact outputs at most
 // 2^(emax - 8); matrix entries within 2^(+-(emax/3 - 4)).
+// How much is judged is decided only for a result that is not surely within the loose bar with
+// status OK (no finding under any of the three): most elements never need their perturbations
+// (fuzz/README.md, "Judged on demand").
 // Ties of the hemisphere rules (a dot product of exactly 0, or one below the format's
 // resolution once the inputs are normalised) are discontinuities and so count as ill-conditioned here; the
 // engine's EDGE-3 cases judge exact ties.

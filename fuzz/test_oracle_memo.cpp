@@ -4,6 +4,11 @@
 // batch, is judged again and its wrong result is found. The table is a correct built-in one
 // (rotor_m2, binary64) whose compose writes a wrong w (off by 1/4: far beyond COMPOSE-1's bars)
 // whenever the test asks it to.
+//
+// The oracle decides how much of an element is judged (its perturbations) only when a result is
+// not surely within the bar (fuzz/README.md, "The fast oracle"). FuzzOracleJudgement shows that
+// the decision is still taken where it matters: a wrong slerp at an ill-conditioned t is judged on
+// its status alone, at an ordinary t on its numbers.
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -58,6 +63,48 @@ const rc_impl& flaky_table() {
   return table;
 }
 
+/// What the flaky slerp does to its results: nothing, add 1/4 to every w, or that and answer
+/// DOMAIN_ERROR.
+enum class SlerpFault { none, wrong_w, wrong_w_and_domain_error };
+SlerpFault g_slerp_fault = SlerpFault::none;
+
+int flaky_slerp(std::size_t n, const double* a, const double* b, const double* t, double* out_q, std::uint8_t* status) {
+  const int rc = base().f64->slerp(n, a, b, t, out_q, status);
+  for (std::size_t e = 0; e < n && g_slerp_fault != SlerpFault::none; ++e) {
+    out_q[4 * e + 3] += 0.25;
+    if (g_slerp_fault == SlerpFault::wrong_w_and_domain_error) status[e] = RC_DOMAIN_ERROR;
+  }
+  return rc;
+}
+
+/// rotor_m2 (binary64) but for slerp.
+const rc_impl& flaky_slerp_table() {
+  static const rc_ops_f64 ops = [] {
+    rc_ops_f64 o = *base().f64;
+    o.slerp = flaky_slerp;
+    return o;
+  }();
+  static const rc_impl table = [] {
+    rc_impl t = base();
+    t.f64 = &ops;
+    return t;
+  }();
+  return table;
+}
+
+/// One slerp(a, b, t) in binary64, a and b ordinary rotations.
+Decoded slerp_batch(double t) {
+  Case c;
+  c.k = 0;
+  c.inputs = {{Real(0.25), Real(-0.5), Real(0.75), Real(0.5)}, {Real(0.5), Real(0.5), Real(-0.5), Real(0.5)}, {Real(t)}};
+  const auto& ops = rotorcert::fuzz::families().at("interpolation");
+  const std::vector<std::uint8_t> bytes =
+      rotorcert::fuzz::encode(ops, "slerp", rotorcert::ref::Format::binary64, std::vector<Case>(1, c));
+  Decoded d;
+  if (!rotorcert::fuzz::decode(bytes.data(), bytes.size(), ops, d)) throw std::runtime_error("not decoded");
+  return d;
+}
+
 /// One batch of `n` copies of compose(a, b), a and b ordinary rotations, in binary64.
 Decoded compose_batch(std::size_t n) {
   Case c;
@@ -77,9 +124,10 @@ using Found = std::vector<std::pair<std::string, std::size_t>>;
 Found findings(const Decoded& d, const std::vector<const rc_impl*>& tables) {
   Found found;
   const int run = rotorcert::fuzz::check(d, tables, [&](const Decoded&, const Finding& f) {
-    found.emplace_back(f.table == &flaky_table() ? "flaky" : f.table->name, f.element);
+    const bool flaky = f.table == &flaky_table() || f.table == &flaky_slerp_table();
+    found.emplace_back(flaky ? "flaky" : f.table->name, f.element);
   });
-  EXPECT_EQ(run, static_cast<int>(tables.size())) << "every table is eligible on compose";
+  EXPECT_EQ(run, static_cast<int>(tables.size())) << "every table is eligible on the op";
   return found;
 }
 
@@ -122,4 +170,23 @@ TEST(FuzzOracleMemo, AnElementWrongOnlyAtOnePlaceInTheBatchIsFound) {
   g_wrong_elements = {false, false, true};
   EXPECT_EQ(findings(d, {flaky}), (Found{{"flaky", 2}}));
   g_wrong_elements = {false};
+}
+
+TEST(FuzzOracleJudgement, AWrongResultAtAnIllConditionedInputIsJudgedOnItsStatus) {
+  RC_CLAUSE("SLERP-1");
+  RC_CLAUSE("SLERP-4");
+  rotorcert::fuzz::init();
+  const rc_impl* flaky = &flaky_slerp_table();
+  // t = 2^80: one unit roundoff of the angle moves the exact result by 2^80 u, far beyond the
+  // strict bar (SLERP-4), so only the status is judged; t = 0.3 is ordinary.
+  const Decoded ill = slerp_batch(0x1p80), ordinary = slerp_batch(0.3);
+  g_slerp_fault = SlerpFault::none;
+  EXPECT_EQ(findings(ill, {flaky}), Found{}) << "rotor_m2's own slerp";
+  EXPECT_EQ(findings(ordinary, {flaky}), Found{}) << "rotor_m2's own slerp";
+  g_slerp_fault = SlerpFault::wrong_w;
+  EXPECT_EQ(findings(ill, {flaky}), Found{}) << "ill-conditioned: the numbers are not judged, the status is OK";
+  EXPECT_EQ(findings(ordinary, {flaky}), (Found{{"flaky", 0}})) << "ordinary: the numbers are judged";
+  g_slerp_fault = SlerpFault::wrong_w_and_domain_error;
+  EXPECT_EQ(findings(ill, {flaky}), (Found{{"flaky", 0}})) << "ill-conditioned: DOMAIN_ERROR inside the domain";
+  g_slerp_fault = SlerpFault::none;
 }
