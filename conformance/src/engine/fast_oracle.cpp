@@ -368,6 +368,15 @@ std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, c
   BoundedValues got(obs.outputs.size());
   for (std::size_t a = 0; a < obs.outputs.size(); ++a)
     if (!exact_values(obs.outputs[a], got[a])) return std::nullopt;
+  return fast_verdicts_of_values(op, fc, got, want);
+}
+
+std::optional<FastVerdicts> fast_verdicts_of_values(const AbiOp& op, const FastCase& fc, const BoundedValues& got,
+                                                    const FastReference& want) {
+  if (want.status != ref::Status::ok) return std::nullopt;
+  for (const BoundedArray& arr : got)
+    for (const Bounded& x : arr)
+      if (!std::isfinite(x.value())) return std::nullopt;
   const ref::BoundedScope scope;
   const Bounded e = output_error_bounded(op, got, want.outputs, fc.scale, fc.tiny);
   if (!scope.decided() || !std::isfinite(e.value())) return std::nullopt;

@@ -78,6 +78,11 @@ struct FastVerdicts {
 };
 std::optional<FastVerdicts> fast_verdicts(const AbiOp& op, const FastCase& fc, const Observed& got,
                                           const FastReference& want);
+/// The same for an observation with status OK whose outputs are given as exact Bounded values
+/// (every value of the format is a long double): the fuzzers read a table's words into these
+/// directly, without MPFR numbers. nullopt where a value is not finite or `want` is not OK.
+std::optional<FastVerdicts> fast_verdicts_of_values(const AbiOp& op, const FastCase& fc, const BoundedValues& got,
+                                                    const FastReference& want);
 
 /// The verdicts of `r` rounded to the format against `want`, whichever way each component rounds:
 /// each component is replaced by the interval between the roundings of its two ends (rounding is
