@@ -596,7 +596,7 @@ using D = ri::DualQuat<double>;
 
 /// Careful and careless forms of the four operations of ABI version 3, each a table of its own.
 enum class V3Impl { right, acos_angle, glm_axis, minus_axis, no_root, minus_root, principal_root, algebraic_root,
-                    unnormalised_translation };
+                    unnormalised_translation, axis_of_normalised };
 
 template <V3Impl K>
 struct V3Ops : Normalizer<0> {
@@ -622,7 +622,12 @@ struct V3Ops : Normalizer<0> {
       axis = {0, 0, 1};
       return ri::Status::ok;
     }
-    if constexpr (K == V3Impl::glm_axis) {  // v / sqrt(1 - w^2) of the normalised q: cancels near w = +-1
+    if constexpr (K == V3Impl::axis_of_normalised) {  // v/|v| of q/|q|: exact scaling, but v flushes beside a huge w
+      Q u;
+      normalize_exact(q, u);
+      const double m = vnorm(u);
+      axis = m == 0 ? V{0, 0, 1} : V{u[0] / m, u[1] / m, u[2] / m};
+    } else if constexpr (K == V3Impl::glm_axis) {  // v / sqrt(1 - w^2) of the normalised q: cancels near w = +-1
       const double m = std::hypot(n, q[3]), w = q[3] / m, s = std::sqrt(std::max(0.0, 1 - w * w));
       if (s <= 0) axis = {0, 0, 1};
       else axis = {q[0] / m / s, q[1] / m / s, q[2] / m / s};
@@ -634,23 +639,22 @@ struct V3Ops : Normalizer<0> {
   }
   static ri::Status sqrt(const Q& q, Q& out) {
     if (!ok(q)) return ri::Status::domain_error;
-    Q u;
-    normalize_exact(q, u);
-    if constexpr (K == V3Impl::principal_root)
-      if (u[3] < 0)
-        for (double& c : u) c = -c;  // the rotation's root: of -q^ where w < 0 (SciPy's Rotation ** 0.5)
-    const double n = vnorm(u);
     if constexpr (K == V3Impl::no_root) {  // the rotation itself, not its square root
-      out = u;
+      normalize_exact(q, out);
       return ri::Status::ok;
     }
-    if (n == 0 && u[3] < 0) {
+    // The plane from q's vector part alone and the half angle from atan2(|v|, w): q / |q| would
+    // flush a vector part far below w to zero (EDGE-5's components of different scales).
+    const double n = vnorm(q);
+    double w = q[3], sign = 1;
+    if constexpr (K == V3Impl::principal_root)
+      if (w < 0) w = -w, sign = -1;  // the rotation's root: of -q^ where w < 0 (SciPy's Rotation ** 0.5)
+    if (n == 0 && w < 0) {
       out = {0, 0, 1, 0};
       return ri::Status::ok;
     }
-    const double a = u[3] >= 0 ? 1 + u[3] : n * n / (1 - u[3]);  // 1 + w without cancellation
-    Q s{u[0], u[1], u[2], a};
-    normalize_exact(s, out);
+    const double h = std::atan2(n, w) / 2, sh = n == 0 ? 0 : std::sin(h) / n;
+    out = {sign * q[0] * sh, sign * q[1] * sh, sign * q[2] * sh, std::cos(h)};
     if constexpr (K == V3Impl::minus_root)
       for (double& c : out) c = -c;
     if constexpr (K == V3Impl::algebraic_root) {  // the algebra's root of q itself: |s| = sqrt|q| (np.sqrt)
@@ -712,6 +716,21 @@ TEST(Engine, ToAxisAlonePassesAndTheOtherRangeIsAcceptable) {
   const auto wrong = run(ri::table<V3Ops<V3Impl::glm_axis>>(), "AXANG-4");
   EXPECT_EQ(wrong.outcome, engine::Outcome::fail);
   EXPECT_NE(wrong.worst_input.find("0x"), std::string::npos) << wrong.worst_input;
+}
+
+TEST(Engine, AnAxisTakenFromTheNormalisedQuaternionFailsOnComponentsOfDifferentScales) {
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("AXANG-4");
+  // v/|v| of q/|q| (q scaled by a power of two first, so |q|^2 neither overflows nor underflows)
+  // is right at every uniform scale, but q/|q| flushes a vector part 2^-x beside a scalar part
+  // 2^x to zero, and the axis becomes +z: the defect of the suite's own rotors before 3053d52.
+  const rc_impl* t = ri::table<V3Ops<V3Impl::axis_of_normalised>>();
+  EXPECT_EQ(run(t, "AXANG-4").outcome, engine::Outcome::pass);
+  const auto edge = run(t, "EDGE-5");
+  EXPECT_EQ(edge.outcome, engine::Outcome::fail);
+  EXPECT_EQ(edge.worst_op, "to_axis");
+  EXPECT_NE(edge.worst_label.find("vector part 2^-"), std::string::npos) << edge.worst_label;
+  EXPECT_EQ(run(ri::table<V3Ops<V3Impl::right>>(), "EDGE-5").outcome, engine::Outcome::pass);
 }
 
 TEST(Engine, SquareRootPassesAndTheRotationItselfFails) {

@@ -747,6 +747,19 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         for (Real& x : c.inputs[axis]) x = g.round(x * s);
         return labelled(c, "non-unit axis, scale 2^" + std::to_string(e), scale_flags(e));
       }
+      if (i % 6 == 5 && op != "compose" && !find_abi_op(op)->nway && !arrays_with_stride(op, 4).empty()) {
+        // Components of very different scales: the vector part 2^-x, the scalar part 2^x (x the
+        // extreme exponent), so that q/|q| flushes the vector part to zero although it alone fixes
+        // the axis and the plane (fuzz finding regression-rotor-tiny-vector-part-*: rotor_gen's
+        // sqrt of (2^-815 (1, -1, 1), -2^760) was +z).
+        const std::size_t a = arrays_with_stride(op, 4).front();
+        const Real small(std::ldexp(1.0, -extreme));
+        for (int j = 0; j < 3; ++j) c.inputs[a][std::size_t(j)] = g.round(c.inputs[a][std::size_t(j)] * small);
+        const double w = std::ldexp(g.uniform(1.0, 2.0), extreme);
+        c.inputs[a][3] = g.round(Real(g.uniform(0.0, 1.0) < 0.5 ? -w : w));
+        return labelled(c, "vector part 2^-" + std::to_string(extreme) + " beside a scalar part 2^" + std::to_string(extreme),
+                        {"NonUnit", "HugeScale", "TinyScale", "UnbalancedScale"});
+      }
       if (find_abi_op(op)->nway && i % 2 == 1) {
         // Influences of unequal scales, each its own power of two (ordinary 2^-4 .. 2^5 or
         // extreme): every influence means its normalised rotation or motion, and its weight is
