@@ -48,11 +48,13 @@ int flaky_compose(std::size_t n, const double* a, const double* b, double* out_q
   return rc;
 }
 
-/// rotor_m2 (binary64) but for compose: the same claims, so the oracle checks it on compose.
-const rc_impl& flaky_table() {
+/// rotor_m2 (binary64) with one op replaced by `Fn`: the same claims, so the oracle checks it on
+/// that op.
+template <auto Slot, auto Fn>
+const rc_impl& rotor_m2_with() {
   static const rc_ops_f64 ops = [] {
     rc_ops_f64 o = *base().f64;
-    o.compose = flaky_compose;
+    o.*Slot = Fn;
     return o;
   }();
   static const rc_impl table = [] {
@@ -62,6 +64,8 @@ const rc_impl& flaky_table() {
   }();
   return table;
 }
+
+const rc_impl& flaky_table() { return rotor_m2_with<&rc_ops_f64::compose, flaky_compose>(); }
 
 /// What the flaky slerp does to its results: nothing, add 1/4 to every w, or that and answer
 /// DOMAIN_ERROR.
@@ -77,20 +81,7 @@ int flaky_slerp(std::size_t n, const double* a, const double* b, const double* t
   return rc;
 }
 
-/// rotor_m2 (binary64) but for slerp.
-const rc_impl& flaky_slerp_table() {
-  static const rc_ops_f64 ops = [] {
-    rc_ops_f64 o = *base().f64;
-    o.slerp = flaky_slerp;
-    return o;
-  }();
-  static const rc_impl table = [] {
-    rc_impl t = base();
-    t.f64 = &ops;
-    return t;
-  }();
-  return table;
-}
+const rc_impl& flaky_slerp_table() { return rotor_m2_with<&rc_ops_f64::slerp, flaky_slerp>(); }
 
 /// One slerp(a, b, t) in binary64, a and b ordinary rotations.
 Decoded slerp_batch(double t) {
