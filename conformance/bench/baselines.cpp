@@ -1,4 +1,4 @@
-// baseline/glm_slerp/<float|double>/<n> and baseline/glm_mix/...: the denominators of issue 7's
+// baseline/glm_slerp/<float|double>/<n> and baseline/glm_mix/...: the denominators of REPORT-2's
 // speed targets. A plain loop out[i] = glm::slerp(a[i], b[i], t[i]) (or glm::mix) over AoS
 // arrays of glm::quat / glm::dquat, compiled here with the project's flags (no -march), on the
 // slerp benchmark's inputs (same generator and seed: op/slerp/<impl>/<scalar>/<n> sees the same

@@ -1,5 +1,5 @@
 // One frame of the render check's pipeline (pose_job.hpp + skin_job.hpp of render_check/) for
-// one skinning method, on native scalar arrays, for timing (issue 7's frame benchmarks;
+// one skinning method, on native scalar arrays, for timing (REPORT-2's frame benchmarks;
 // ozz-animation style job: inputs, outputs, validate(), prepare(), run()).
 //
 // A frame: clip A sampled at time_a and clip B at time_b, the two poses blended with weight

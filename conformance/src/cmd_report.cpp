@@ -228,7 +228,7 @@ int run(const Args& a) {
     report["sections"]["third_party"] = std::move(section);
   }
 
-  // Speed (issue 7): the quick benchmark run into OUT/bench, after certifying so that no child
+  // Speed (REPORT-2): the quick benchmark run into OUT/bench, after certifying so that no child
   // process of the certification competes with it for the CPUs. Shown, not scored.
   if (a.no_bench) {
     report["sections"]["speed"] = {{"note", "left out (--no-bench)"}};

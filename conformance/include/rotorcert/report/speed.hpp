@@ -1,4 +1,4 @@
-// The speed section of report.json (issue 7), computed from the Google Benchmark JSON that
+// The speed section of report.json (REPORT-2), computed from the Google Benchmark JSON that
 // `rotorcert_bench` writes (conformance/bench/README.md) and, for the accuracy-versus-speed chart,
 // from the certificates of the same report. Everything the section says is derived from those two
 // inputs alone, so that a bench.json kept from another machine gives the same section.
@@ -41,7 +41,7 @@ namespace rotorcert::report {
 /// k=1 target=none") as key/value pairs: how a benchmark is read, never from its name.
 std::map<std::string, std::string> bench_label_fields(const nlohmann::json& benchmark);
 
-/// The speed targets of issue 7: ratios at 4096 float elements against a GLM baseline of the same run.
+/// The speed targets of REPORT-2: ratios at 4096 float elements against a GLM baseline of the same run.
 struct SpeedTarget {
   const char* id;
   const char* what;
