@@ -14,18 +14,9 @@
 #include <rotorcert/testing/generators.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
+#include "prelude.hpp"
+
 namespace {
-
-using namespace rotorcert::ref;
-using namespace rotorcert::ref::clause;
-using rotorcert::testing::quaternion;
-using rotorcert::testing::real_in;
-using rotorcert::testing::unit_quaternion;
-using Q = Quaternion<Real>;
-using QD = Quaternion<double>;
-
-/// The spec's "ref" class (spec/clauses.json, tolerance_classes.ref: 1e-60).
-const Real& ref_class_bar() { return rotorcert::testing::ref_class_bar(); }
 
 /// The strict bar of an eps class (spec/clauses.json, tolerance_classes), in binary64 units.
 Real binary64_bar(const std::string& cls) {

@@ -19,18 +19,11 @@
 #include <rotorcert/testing/near.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
+#include "prelude.hpp"
+
 namespace {
 
-using namespace rotorcert::ref;
-using namespace rotorcert::ref::clause;
-using rotorcert::testing::real_in;
-using rotorcert::testing::unit_quaternion;
-using rotorcert::testing::vector3;
-using rotorcert::testing::check_cases;
-using rotorcert::testing::near;
 using PMV = pga::MV<Real>;
-using DQ = DualQuaternion<Real>;
-using V3 = Vec3<Real>;
 
 // ---- tolerance: the spec's "ref" class, relative to max(1, |expected|) per component ----------
 

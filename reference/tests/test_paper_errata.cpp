@@ -10,20 +10,13 @@
 #include <rotorcert/testing/generators.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
+#include "prelude.hpp"
+
 namespace {
 
-using namespace rotorcert::ref;
-using namespace rotorcert::ref::clause;
 using namespace rotorcert::ref::paper;
-using rotorcert::testing::quaternion;
-using rotorcert::testing::real_in;
-using rotorcert::testing::unit_quaternion;
-using rotorcert::testing::vector3;
-using Q = Quaternion<Real>;
 using MV = cl3::MV<Real>;
 
-/// The spec's "ref" class (spec/clauses.json, tolerance_classes.ref: 1e-60).
-const Real& ref_class_bar() { return rotorcert::testing::ref_class_bar(); }
 
 bool same(const MV& a, const MV& b) { return a.c == b.c; }
 Real max_abs_diff(const Vec3<Real>& a, const Vec3<Real>& b) {

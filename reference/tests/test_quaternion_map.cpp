@@ -12,19 +12,14 @@
 #include <rotorcert/testing/generators.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
+#include "prelude.hpp"
+
 namespace {
 
-using namespace rotorcert::ref;
-using namespace rotorcert::ref::clause;
-using rotorcert::testing::quaternion;
-using rotorcert::testing::unit_quaternion;
-using rotorcert::testing::vector3;
-using Q = Quaternion<Real>;
 using MV = cl3::MV<Real>;
 
 /// The spec's "ref" class (spec/clauses.json, tolerance_classes.ref: 1e-60): identities of the
 /// reference itself at 256 bits, where rounding happens.
-const Real& ref_class_bar() { return rotorcert::testing::ref_class_bar(); }
 
 bool same(const MV& a, const MV& b) { return a.c == b.c; }
 bool same(const Q& a, const Q& b) { return a.w == b.w && a.x == b.x && a.y == b.y && a.z == b.z; }

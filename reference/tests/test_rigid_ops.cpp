@@ -18,19 +18,9 @@
 #include <rotorcert/testing/near.hpp>
 #include <rotorcert/testing/tolerance.hpp>
 
-namespace {
+#include "prelude.hpp"
 
-using namespace rotorcert::ref;
-using namespace rotorcert::ref::clause;
-using rotorcert::testing::quaternion;
-using rotorcert::testing::real_in;
-using rotorcert::testing::unit_quaternion;
-using rotorcert::testing::vector3;
-using rotorcert::testing::check_cases;
-using rotorcert::testing::near;
-using DQ = DualQuaternion<Real>;
-using Q = Quaternion<Real>;
-using V3 = Vec3<Real>;
+namespace {
 
 // ---- tolerance: the spec's "ref" class, relative to max(1, |expected|) per component ----------
 
