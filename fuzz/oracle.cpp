@@ -122,25 +122,25 @@ struct TableResults {
   std::vector<int> stride;                       // per output array: words per element
   std::vector<std::uint8_t> status;              // per element
 
+  /// Word j of element e in output array a, as a double (every float is one exactly).
+  double value(std::size_t a, std::size_t e, std::size_t j) const {
+    const unsigned char* p = out[a].data() + (e * static_cast<std::size_t>(stride[a]) + j) * word;
+    if (word == 8) {
+      double x;
+      std::memcpy(&x, p, 8);
+      return x;
+    }
+    float x;
+    std::memcpy(&x, p, 4);
+    return x;
+  }
   Observed observed(std::size_t e) const {
     Observed o;
     o.call_rc = rc;
     o.status = status[e];
     for (std::size_t a = 0; a < out.size(); ++a) {
       std::vector<Real> v;
-      const std::size_t s = static_cast<std::size_t>(stride[a]);
-      for (std::size_t j = 0; j < s; ++j) {
-        const unsigned char* p = out[a].data() + (e * s + j) * word;
-        if (word == 8) {
-          double x;
-          std::memcpy(&x, p, 8);
-          v.push_back(Real(x));
-        } else {
-          float x;
-          std::memcpy(&x, p, 4);
-          v.push_back(Real(x));
-        }
-      }
+      for (std::size_t j = 0; j < static_cast<std::size_t>(stride[a]); ++j) v.push_back(Real(value(a, e, j)));
       o.outputs.push_back(std::move(v));
     }
     return o;
@@ -149,24 +149,12 @@ struct TableResults {
   /// the fast level without MPFR numbers; false where a word is not finite.
   bool bounded(std::size_t e, engine::BoundedValues& values) const {
     values.assign(out.size(), {});
-    for (std::size_t a = 0; a < out.size(); ++a) {
-      const std::size_t s = static_cast<std::size_t>(stride[a]);
-      for (std::size_t j = 0; j < s; ++j) {
-        const unsigned char* p = out[a].data() + (e * s + j) * word;
-        long double x;
-        if (word == 8) {
-          double v;
-          std::memcpy(&v, p, 8);
-          x = v;
-        } else {
-          float v;
-          std::memcpy(&v, p, 4);
-          x = v;
-        }
+    for (std::size_t a = 0; a < out.size(); ++a)
+      for (std::size_t j = 0; j < static_cast<std::size_t>(stride[a]); ++j) {
+        const double x = value(a, e, j);
         if (!std::isfinite(x)) return false;
-        values[a].push_back(ref::Bounded(x, 0));
+        values[a].push_back(ref::Bounded(static_cast<long double>(x), 0));
       }
-    }
     return true;
   }
   /// Element e's results as bytes: the call's return value, the status byte and every output
@@ -936,12 +924,11 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
     // DECL-1: an input outside a precondition the library documents is not judged, as in certify.
     const engine::Declarations& declared = declarations(*t);
     const TableResults got = call_raw(*t, op, d.n, d.k, d.raw);
-    std::vector<std::string> got_key(d.n);
     engine::BoundedValues got_values;
     for (std::size_t e = 0; e < d.n; ++e) {
       if (judge[e] == Judge::nothing) continue;
-      got_key[e] = got.key(e);
-      if (is_cleared(e, got_key[e])) continue;
+      std::string got_key = got.key(e);
+      if (is_cleared(e, got_key)) continue;
       // Surely within the loose bar is never a FAIL: MPFR's verdict is PASS or QUALITY_WARNING,
       // which an acceptable convention can only turn into an ACCEPTABLE PASS. With status OK it is
       // no finding where only the status is judged either. The words are read as Bounded values
@@ -973,7 +960,7 @@ int check(const Decoded& d, const std::vector<const rc_impl*>& tables, const Fin
           continue;
         }
       }
-      clear(e, got_key[e]);
+      clear(e, std::move(got_key));
     }
     // EXP-2: exp(log q) = q through the implementation, on log's own outputs (their words as the
     // table wrote them are exp's inputs).

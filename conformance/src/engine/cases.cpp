@@ -747,12 +747,13 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
         for (Real& x : c.inputs[axis]) x = g.round(x * s);
         return labelled(c, "non-unit axis, scale 2^" + std::to_string(e), scale_flags(e));
       }
-      if (i % 6 == 5 && op != "compose" && !find_abi_op(op)->nway && !arrays_with_stride(op, 4).empty()) {
+      const std::vector<std::size_t> quaternion_arrays = arrays_with_stride(op, 4);
+      if (i % 6 == 5 && op != "compose" && !find_abi_op(op)->nway && !quaternion_arrays.empty()) {
         // Components of very different scales: the vector part 2^-x, the scalar part 2^x (x the
         // extreme exponent), so that q/|q| flushes the vector part to zero although it alone fixes
         // the axis and the plane (fuzz finding regression-rotor-tiny-vector-part-*: rotor_gen's
         // sqrt of (2^-815 (1, -1, 1), -2^760) was +z).
-        const std::size_t a = arrays_with_stride(op, 4).front();
+        const std::size_t a = quaternion_arrays.front();
         const Real small(std::ldexp(1.0, -extreme));
         for (int j = 0; j < 3; ++j) c.inputs[a][std::size_t(j)] = g.round(c.inputs[a][std::size_t(j)] * small);
         const double w = std::ldexp(g.uniform(1.0, 2.0), extreme);
@@ -779,7 +780,7 @@ void add_families(std::vector<Case>& cases, Gen& g, const std::string& clause, c
       const int far = op == "compose" ? extreme / 2 : extreme;
       const int e = (i % 3 == 0) ? g.integer(-10, 10) : (i % 3 == 1 ? far : -far);
       const Real s(std::ldexp(g.uniform(1.0, 2.0), e));
-      for (std::size_t a : arrays_with_stride(op, 4))
+      for (std::size_t a : quaternion_arrays)
         for (Real& x : c.inputs[a]) x = g.round(x * s);
       for (std::size_t a : arrays_with_stride(op, 8))
         for (Real& x : c.inputs[a]) x = g.round(x * s);
