@@ -13,8 +13,9 @@ add_executable(rotorcert_bench
   ${rotorcert_bench_dir}/roofline.cpp
   ${rotorcert_bench_dir}/roofline_kernels.cpp
   ${rotorcert_bench_dir}/frame_job.cpp
+  ${rotorcert_bench_dir}/vertex_kernels.cpp
   ${rotorcert_bench_dir}/frame_bench.cpp)
-# foreach_target.h re-includes roofline_kernels.cpp as "bench/roofline_kernels.cpp".
+# foreach_target.h re-includes roofline_kernels.cpp and vertex_kernels.cpp as "bench/<file>".
 target_include_directories(rotorcert_bench PRIVATE ${rotorcert_bench_dir}/..)
 # rotorcert::skinning (render_check/skinning.cmake, defined after this file: resolved at generate
 # time): the render check's PoseJob/SkinJob, which the frame benchmarks' guard compares against.
@@ -44,9 +45,10 @@ endif()
 # bars) for every method on the built-in simple and medium characters. Not a timing test.
 rotorcert_add_test(bench_test_frame_job
   ${rotorcert_bench_dir}/test_frame_job.cpp
-  ${rotorcert_bench_dir}/frame_job.cpp)
+  ${rotorcert_bench_dir}/frame_job.cpp
+  ${rotorcert_bench_dir}/vertex_kernels.cpp)
 target_include_directories(bench_test_frame_job PRIVATE ${rotorcert_bench_dir}/..)
-target_link_libraries(bench_test_frame_job PRIVATE rotorcert::skinning rotorcert::impls nlohmann_json::nlohmann_json)
+target_link_libraries(bench_test_frame_job PRIVATE rotorcert::skinning rotorcert::impls nlohmann_json::nlohmann_json hwy::hwy)
 target_compile_definitions(bench_test_frame_job PRIVATE ROTORCERT_SPEC_DIR="${PROJECT_SOURCE_DIR}/spec")
 set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${CMAKE_CURRENT_BINARY_DIR}/bench_test_frame_job_labels.cmake)
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/bench_test_frame_job_labels.cmake

@@ -10,6 +10,8 @@
 #include <rotorcert/impl.hpp>
 #include <rotorcert/render/vertex_error.hpp>
 
+#include "bench/vertex_kernels.hpp"
+
 namespace rotorcert::bench {
 
 namespace r = rotorcert::render;
@@ -67,8 +69,9 @@ std::vector<const r::Channel*> effective_channels(const r::Clip& clip, r::Channe
 //   keys of a clip: rotation keyframes, key_width_ scalars each (4: quaternion; 8: [q, 0]
 //     rotation-only dual quaternion for dq_sclerp), channel c's keys from key0; translation
 //     keyframes 3 each.
-//   vertices of every mesh one after another: 4 influences each, joints_ (level positions),
-//     weights_ (w_k / W in S, as SkinJob divides), bind positions/normals 3 each.
+//   vertices of every mesh one after another: 4 influences each, vjoints_ (level positions),
+//     weights_ (w_k / W in S, as SkinJob divides); the vertex loops read them, with the
+//     bind-space positions and normals, as the SoA streams_ of vertex_kernels.hpp.
 template <class S>
 class Native final : public FrameJob::Pipeline {
  public:
@@ -152,10 +155,7 @@ class Native final : public FrameJob::Pipeline {
     vertices = nv;
     vjoints_.resize(4 * nv);
     weights_.resize(4 * nv);
-    pin_.resize(3 * nv);
-    nin_.resize(3 * nv);
-    pout_.assign(3 * nv, S(0));
-    nout_.assign(3 * nv, S(0));
+    std::vector<S> pin(3 * nv), nin(3 * nv);
     std::size_t v = 0;
     for (const r::SkinnedMesh& mesh : job.scene->meshes)
       for (std::size_t mv = 0; mv < mesh.positions.size(); ++mv, ++v) {
@@ -165,10 +165,10 @@ class Native final : public FrameJob::Pipeline {
           total += weights_[4 * v + k] = static_cast<S>(mesh.weights[mv][k]);
         }
         for (std::size_t k = 0; k < 4; ++k) weights_[4 * v + k] /= total;
-        bind_vertex(v, mesh.positions[mv], &pin_[3 * v]);
-        bind_vertex(v, mesh.normals[mv], &nin_[3 * v]);
+        bind_vertex(v, mesh.positions[mv], &pin[3 * v]);
+        bind_vertex(v, mesh.normals[mv], &nin[3 * v]);
       }
-
+    lay_out_vertex_streams(pin, nin);
     // Scratch, sized once: run() allocates nothing.
     std::size_t widest_clip = std::max(clips_[0].rot.size(), clips_[1].rot.size());
     st_.assign(std::max({2 * n, nv, widest_clip, std::size_t{1}}), RC_OK);
@@ -202,9 +202,11 @@ class Native final : public FrameJob::Pipeline {
 
   r::SkinOutput output(std::size_t mesh) const override {
     r::SkinOutput out;
+    const auto& p = streams_.position_out;
+    const auto& n = streams_.normal_out;
     for (std::size_t v = mesh_begin_[mesh]; v < mesh_begin_[mesh + 1]; ++v) {
-      out.positions.push_back({double(pout_[3 * v]), double(pout_[3 * v + 1]), double(pout_[3 * v + 2])});
-      out.normals.push_back({double(nout_[3 * v]), double(nout_[3 * v + 1]), double(nout_[3 * v + 2])});
+      out.positions.push_back({double(p[0][v]), double(p[1][v]), double(p[2][v])});
+      out.normals.push_back({double(n[0][v]), double(n[1][v]), double(n[2][v])});
     }
     return out;
   }
@@ -236,7 +238,11 @@ class Native final : public FrameJob::Pipeline {
   std::vector<S> bq_, bt_, kb_;
   std::vector<std::uint8_t> kb_stretched_;
   std::vector<std::uint32_t> vjoints_;
-  std::vector<S> weights_, pin_, nin_, pout_, nout_;
+  std::vector<S> weights_;
+  // The vertex loops' SoA streams (vertex_kernels.hpp), padded to a multiple of kVertexPad.
+  std::vector<vertices::Offset<S>> voffset_;
+  std::vector<S> vweight_, vin_, vout_;
+  vertices::Streams<S> streams_;
   std::vector<std::uint8_t> st_;
   // LBS
   std::vector<S> lq_, lt_, gq_, gt_, r3_, sq_, mats_, palette_, pq_;
@@ -310,6 +316,40 @@ class Native final : public FrameJob::Pipeline {
       for (std::size_t c = 0; c < 3; ++c) acc[c] += weights_[4 * v + k] * y[c];
     }
     std::copy(acc, acc + 3, out);
+  }
+
+  /// The vertex loops' streams from the AoS influences and the bind-space positions and
+  /// normals (3 per vertex): SoA, padded with vertices of weight (1, 0, 0, 0) on entry 0.
+  void lay_out_vertex_streams(const std::vector<S>& pin, const std::vector<S>& nin) {
+    const std::size_t nv = vertices, pad = vertices::kVertexPad;
+    const std::size_t count = (nv + pad - 1) / pad * pad;
+    const std::size_t stride = lbs_ ? 12 : 8;  // palette scalars per joint
+    voffset_.assign(4 * count, 0);
+    vweight_.assign(4 * count, S(0));
+    vin_.assign(6 * count, S(0));
+    vout_.assign(6 * count, S(0));
+    for (std::size_t v = 0; v < count; ++v) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        const bool real = v < nv;
+        voffset_[k * count + v] = static_cast<vertices::Offset<S>>(real ? stride * vjoints_[4 * v + k] : 0);
+        vweight_[k * count + v] = real ? weights_[4 * v + k] : S(k == 0 ? 1 : 0);
+      }
+      for (std::size_t c = 0; c < 3 && v < nv; ++c) {
+        vin_[c * count + v] = pin[3 * v + c];
+        vin_[(3 + c) * count + v] = nin[3 * v + c];
+      }
+    }
+    streams_.count = count;
+    for (std::size_t k = 0; k < 4; ++k) {
+      streams_.offset[k] = &voffset_[k * count];
+      streams_.weight[k] = &vweight_[k * count];
+    }
+    for (std::size_t c = 0; c < 3; ++c) {
+      streams_.position[c] = &vin_[c * count];
+      streams_.normal[c] = &vin_[(3 + c) * count];
+      streams_.position_out[c] = &vout_[c * count];
+      streams_.normal_out[c] = &vout_[(3 + c) * count];
+    }
   }
 
   // ---- per frame --------------------------------------------------------------------------
@@ -391,30 +431,7 @@ class Native final : public FrameJob::Pipeline {
     if (!skin_vertices) return true;
 
     // Vertices: the suite's blend of the 4 matrices, the same loop for every method.
-    const std::size_t nv = vertices;
-    const std::uint32_t* J = vjoints_.data();
-    const S* W = weights_.data();
-    const S* P = palette_.data();
-    for (std::size_t v = 0; v < nv; ++v) {
-      // One expression per entry (SkinJob's sum, in its order) rather than += over k, which
-      // GCC keeps in memory between the influences.
-      const S w0 = W[4 * v], w1 = W[4 * v + 1], w2 = W[4 * v + 2], w3 = W[4 * v + 3];
-      const S* a0 = P + 12 * J[4 * v];
-      const S* a1 = P + 12 * J[4 * v + 1];
-      const S* a2 = P + 12 * J[4 * v + 2];
-      const S* a3 = P + 12 * J[4 * v + 3];
-      S m[12];
-      for (std::size_t i = 0; i < 12; ++i) m[i] = w0 * a0[i] + w1 * a1[i] + w2 * a2[i] + w3 * a3[i];
-      // Loaded first: the stores below may alias them as far as the compiler knows.
-      const S x0 = pin_[3 * v], x1 = pin_[3 * v + 1], x2 = pin_[3 * v + 2];
-      const S y0 = nin_[3 * v], y1 = nin_[3 * v + 1], y2 = nin_[3 * v + 2];
-      S* po = &pout_[3 * v];
-      S* no = &nout_[3 * v];
-      for (std::size_t row = 0; row < 3; ++row) {
-        po[row] = (m[row] * x0 + m[3 + row] * x1 + m[6 + row] * x2) + m[9 + row];
-        no[row] = m[row] * y0 + m[3 + row] * y1 + m[6 + row] * y2;
-      }
-    }
+    vertices::skin_lbs(streams_, palette_.data());
     return true;
   }
 
@@ -441,66 +458,8 @@ class Native final : public FrameJob::Pipeline {
     if (!skin_vertices) return true;
 
     // Vertices: Kavan et al.'s DQS shader (2008, Algorithm 1) over the palette of skinning dual
-    // quaternions, the same loop for every method, as the LBS matrix blend is (frame_job.hpp):
-    // each influence signed by its real part's dot with the pivot's (DQ-6: the first influence
-    // of weight > 0; -1 iff the dot is < 0), summed with its weight into b = (b_r, b_d), then
-    // p' = R p + t and n' = R n, with R and t of b / |b_r| (DQ-3; the component of b_d along
-    // b_r moves only the scalar part of b_d b_r*, so it needs no projection).
-    // In blocks of kBlock vertices, phase by phase, so that the divisions of a block are
-    // independent of each other; vertex by vertex the chain dot -> sign -> sum -> sqrt -> divide
-    // -> rotate was latency-bound (09_02 in double: 41 ns a vertex; in blocks 27 ns; without the
-    // square root and with a vertex's 8 sums contiguous, which the compiler vectorises, 22 ns).
-    constexpr std::size_t kBlock = 16;
-    const std::size_t nv = vertices;
-    const std::uint32_t* J = vjoints_.data();
-    const S* W = weights_.data();
-    const S* D = sd_.data();
-    S b[kBlock][8], s2[kBlock];
-    for (std::size_t v0 = 0; v0 < nv; v0 += kBlock) {
-      const std::size_t m = std::min(kBlock, nv - v0);
-      for (std::size_t l = 0; l < m; ++l) {
-        const std::size_t v = v0 + l;
-        const S* a[4] = {D + 8 * J[4 * v], D + 8 * J[4 * v + 1], D + 8 * J[4 * v + 2], D + 8 * J[4 * v + 3]};
-        S w[4] = {W[4 * v], W[4 * v + 1], W[4 * v + 2], W[4 * v + 3]};
-        const S* p = w[0] > 0 ? a[0] : w[1] > 0 ? a[1] : w[2] > 0 ? a[2] : a[3];
-        for (std::size_t k = 0; k < 4; ++k) {
-          const S dot = a[k][0] * p[0] + a[k][1] * p[1] + a[k][2] * p[2] + a[k][3] * p[3];
-          w[k] = dot < 0 ? -w[k] : w[k];
-        }
-        for (std::size_t i = 0; i < 8; ++i)
-          b[l][i] = w[0] * a[0][i] + w[1] * a[1][i] + w[2] * a[2][i] + w[3] * a[3][i];
-      }
-      // s = 2 / |b_r|^2: the rotation matrix of the unnormalised real part b_r (MAT-1 scaled by
-      // 1 / |b_r|^2) and t = 2 vec(b_d b_r*) / |b_r|^2 need no square root.
-      for (std::size_t l = 0; l < m; ++l)
-        s2[l] = S(2) / (b[l][0] * b[l][0] + b[l][1] * b[l][1] + b[l][2] * b[l][2] + b[l][3] * b[l][3]);
-      for (std::size_t l = 0; l < m; ++l) {
-        const std::size_t v = v0 + l;
-        const S x = b[l][0], y = b[l][1], z = b[l][2], w = b[l][3];
-        const S dx = b[l][4], dy = b[l][5], dz = b[l][6], dw = b[l][7];
-        const S s = s2[l];
-        const S xs = x * s, ys = y * s, zs = z * s;
-        const S wx = w * xs, wy = w * ys, wz = w * zs, xx = x * xs, xy = x * ys, xz = x * zs;
-        const S yy = y * ys, yz = y * zs, zz = z * zs;
-        const S m00 = S(1) - (yy + zz), m01 = xy - wz, m02 = xz + wy;
-        const S m10 = xy + wz, m11 = S(1) - (xx + zz), m12 = yz - wx;
-        const S m20 = xz - wy, m21 = yz + wx, m22 = S(1) - (xx + yy);
-        const S tx = s * (w * dx - dw * x + (y * dz - z * dy));
-        const S ty = s * (w * dy - dw * y + (z * dx - x * dz));
-        const S tz = s * (w * dz - dw * z + (x * dy - y * dx));
-        // Loaded first: the stores below may alias them as far as the compiler knows.
-        const S p0 = pin_[3 * v], p1 = pin_[3 * v + 1], p2 = pin_[3 * v + 2];
-        const S n0 = nin_[3 * v], n1 = nin_[3 * v + 1], n2 = nin_[3 * v + 2];
-        S* po = &pout_[3 * v];
-        S* no = &nout_[3 * v];
-        po[0] = (m00 * p0 + m01 * p1 + m02 * p2) + tx;
-        po[1] = (m10 * p0 + m11 * p1 + m12 * p2) + ty;
-        po[2] = (m20 * p0 + m21 * p1 + m22 * p2) + tz;
-        no[0] = m00 * n0 + m01 * n1 + m02 * n2;
-        no[1] = m10 * n0 + m11 * n1 + m12 * n2;
-        no[2] = m20 * n0 + m21 * n1 + m22 * n2;
-      }
-    }
+    // quaternions, the same loop for every method, as the LBS matrix blend is (frame_job.hpp).
+    vertices::skin_dqs(streams_, sd_.data());
     return true;
   }
 

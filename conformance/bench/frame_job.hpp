@@ -34,6 +34,9 @@
 //             more than the whole LBS vertex loop; the table's DLB per element is timed by
 //             the op benchmark dq_blend (k = 4) against blend_qlb, and the render check
 //             (SkinJob) still skins with it.
+//             Both loops run SIMD across vertices (vertex_kernels.hpp: Highway, the CPU's best
+//             target, one vertex per lane, the palette gathered per lane, as a GPU runs the
+//             shader), so that neither technique is timed on slower suite code than the other.
 // Normals are not renormalised (a shader does that per fragment); PoseJob/SkinJob's are.
 //
 // Rigid rigs only: every joint's global stretch K must be the identity (no rest scale other
@@ -48,7 +51,7 @@
 // What run() does besides the ABI calls (all in the method's scalar type, in the timed path):
 // locating the keys (pose_math::locate, on the channel's binary64 times), gathering keyframes,
 // scattering the slerp results into the joints' slots, lerping translations, gathering parents
-// and influences, building the matrix palette, the LBS vertex loop, and checking every status
+// and influences, building the matrix palette, the two vertex loops, and checking every status
 // byte. run() allocates nothing.
 #pragma once
 
