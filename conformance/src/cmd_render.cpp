@@ -24,7 +24,7 @@
 
 namespace rotorcert::cli {
 
-int run_render(const RenderRequest& o, const char* who) {
+int run_render(const RenderRequest& o, const char* who, nlohmann::json* result_out) {
   namespace r = rotorcert::render;
   std::vector<r::Scene> scenes;
   std::vector<r::SceneInput> inputs;
@@ -101,6 +101,7 @@ int run_render(const RenderRequest& o, const char* who) {
   const auto result = r::run_render_check(inputs, methods, options, *renderer);
   certify::write_atomically(options.out / "render.json", result.dump(1) + "\n");
   certify::write_atomically(options.out / "render.html", r::render_html(result, options.out));
+  if (result_out != nullptr) *result_out = result;
 
   if (!o.print) return result.at("summary").at("exit_code").get<int>();
   std::printf("%-16s %-28s %-15s %11s %11s %11s %-15s %8s %9s %s\n", "scene", "method", "VIS-1", "max mm", "virtual mm",

@@ -105,6 +105,7 @@ int run(const Args& a) {
   std::string render_note;
   if (!a.no_render) {
     std::string dir = a.render_dir;
+    certify::json result;  // this run's render check, handed over in memory
     if (dir.empty()) {
       RenderRequest request;
       request.file = a.render_file;
@@ -113,17 +114,18 @@ int run(const Args& a) {
       request.impls = a.impls;
       request.print = false;
       request.require_methods = false;
-      // A stale render.json must not stand in for this run's.
-      std::filesystem::remove(std::filesystem::path(request.out) / "render.json");
       if (!a.common.quiet) std::cout << "render check (VIS-1..3) into " << request.out << " ...\n" << std::flush;
-      if (run_render(request, "rotorcert report: render") == kExitUsage) return kExitUsage;
+      const int rc = run_render(request, "rotorcert report: render", &result);
+      if (rc == kExitUsage) return kExitUsage;
+      if (result.is_null())
+        render_note = rc == kExitOk ? "the implementations chosen offer neither linear blend nor dual quaternion skinning"
+                                    : "the render check could not run (its message is on stderr)";
       dir = request.out;
     }
-    if (a.render_dir.empty() && !std::filesystem::exists(std::filesystem::path(dir) / "render.json")) {
-      render_note = "the implementations chosen offer neither linear blend nor dual quaternion skinning";
-    } else {
+    if (render_note.empty()) {
       try {
-        render_section = render::report_section(dir);
+        if (!a.render_dir.empty()) result = render::read_render_result(dir);
+        render_section = render::report_section(result, dir);
         // report.md links the strips relative to itself.
         const auto out_abs = std::filesystem::absolute(a.common.out);
         for (certify::json& f : render_section.at("figures"))

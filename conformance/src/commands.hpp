@@ -62,8 +62,9 @@ struct RenderRequest {
   bool require_methods = true;      // false: implementations without LBS or DQS are no error (exit 0, no files)
 };
 /// Runs the render check and writes its files; the exit code of `rotorcert render` (0 as
-/// expected, 1 not, 2 usage or malformed file, messages prefixed with `who`).
-int run_render(const RenderRequest& request, const char* who);
+/// expected, 1 not, 2 usage or malformed file, messages prefixed with `who`). `result`, when
+/// given, receives the check's result (render.json's content; null when nothing was checked).
+int run_render(const RenderRequest& request, const char* who, nlohmann::json* result = nullptr);
 
 /// `rotorcert bench [--quick] --out DIR` (cmd_bench.cpp).
 Command add_bench(CLI::App& parent);

@@ -676,7 +676,7 @@ std::string embedded_png(const std::filesystem::path& file) {
 
 }  // namespace
 
-json report_section(const std::filesystem::path& dir) {
+json read_render_result(const std::filesystem::path& dir) {
   const auto file = dir / "render.json";
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error(file.string() + ": cannot be read (run rotorcert render --out " + dir.string() + ")");
@@ -688,6 +688,11 @@ json report_section(const std::filesystem::path& dir) {
   }
   if (!r.is_object() || r.value("format", "") != "rotorcert-render")
     throw std::runtime_error(file.string() + ": not a render.json of rotorcert render");
+  return r;
+}
+
+json report_section(const json& r, const std::filesystem::path& dir) {
+  const auto file = dir / "render.json";
   json figures = json::array(), rows = json::array();
   for (const auto& sc : r.at("scenes")) {
     const std::string scene = sc.at("scene");

@@ -123,8 +123,9 @@ nlohmann::json run_render_check(std::span<const SceneInput> scenes, std::span<co
 /// URIs read from `out`; per-method frames are linked by relative path).
 std::string render_html(const nlohmann::json& result, const std::filesystem::path& out);
 
-/// sections.render of report.json (`rotorcert report --render DIR`), from the render.json that
-/// `rotorcert render --out DIR` wrote:
+/// sections.render of report.json, from a render check's result (run_render_check's value, in
+/// memory when `rotorcert report` ran it; read_render_result's when it reads an earlier run) and
+/// the directory its PNGs were written to:
 ///   {"source": "DIR/render.json", "renderer", "spec_version", "as_expected", "counts",
 ///    "figures": [{"scene", "kind": "figure1" | "candy_wrapper", "clip", "panels": [names, left to right],
 ///                 "file": PNG path, "data_uri": "data:image/png;base64,...",
@@ -133,9 +134,12 @@ std::string render_html(const nlohmann::json& result, const std::filesystem::pat
 ///              "vis1", "max_mm", "mean_mm", "virtual_max_mm", "normal_max_rad",
 ///              "vis2", "max_channel_diff", "share_over", "psnr_db"}]}
 /// Figures: per scene those of its "twist" clip (the candy-wrapper pose), else of its first clip;
-/// embedded so that report.html stays self-contained. std::runtime_error when render.json cannot
-/// be read or is not a "rotorcert-render" document.
-nlohmann::json report_section(const std::filesystem::path& dir);
+/// embedded so that report.html stays self-contained. std::runtime_error when a PNG cannot be read.
+nlohmann::json report_section(const nlohmann::json& result, const std::filesystem::path& dir);
+
+/// The render.json that `rotorcert render --out DIR` wrote (`rotorcert report --render DIR`).
+/// std::runtime_error when it cannot be read or is not a "rotorcert-render" document.
+nlohmann::json read_render_result(const std::filesystem::path& dir);
 
 
 }  // namespace rotorcert::render
