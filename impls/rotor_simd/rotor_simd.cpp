@@ -13,7 +13,8 @@
 //                       (foreach_target.h) and holds the dispatch (compiled once): Highway's HWY_DYNAMIC_DISPATCH picks the default target, an
 //      explicit table of the compiled targets lets select_target / ROTORCERT_SIMD_TARGET force one;
 //      with the default target, a batch's tail shorter than one block (a single-element call is
-//      all tail) runs on the narrowest SIMD target (split_tail).
+//      all tail) runs on the one-lane SCALAR target when it is one or two elements, else on the
+//      narrowest SIMD target (split_tail).
 //
 // The rotor R = Phi(q) = w - x e23 - y e31 - z e12 (Q2R-1) is stored by its quaternion
 // coefficients: the sandwich R v ~R, the product Phi(a)Phi(b) and the rotor log/exp are written
@@ -74,6 +75,7 @@ struct State {
   const Kernels* fallback_default = nullptr;  // Highway's own choice
   const Kernels* env_default = nullptr;       // ROTORCERT_SIMD_TARGET, if it names a runnable target
   const Kernels* narrowest = nullptr;         // the runnable SIMD target with the fewest lanes
+  const Kernels* one_lane = nullptr;          // HWY_SCALAR: the same kernels one element at a time
   std::atomic<const Kernels*> active{nullptr};
   std::atomic<bool> forced{false};            // a target chosen by select_target or the environment
 };
@@ -105,6 +107,7 @@ State& state() {
       const Kernels* k = st->runnable[i];
       const bool simd = k->target != HWY_SCALAR && k->target != HWY_EMU128;
       if (simd && (st->narrowest == nullptr || k->lanes <= st->narrowest->lanes)) st->narrowest = k;  // best of the narrowest
+      if (k->target == HWY_SCALAR) st->one_lane = k;
     }
     st->fallback_default = HWY_DYNAMIC_DISPATCH(GetKernels)();
     if (const char* env = std::getenv("ROTORCERT_SIMD_TARGET"); env != nullptr && *env != '\0') {
@@ -127,23 +130,32 @@ const bool g_init = (state(), true);
 
 inline const Kernels& active() { return *state().active.load(std::memory_order_relaxed); }
 
+/// Tails of at most this many elements run on the one-lane target: a SIMD target computes a tail
+/// as a whole block through padded copies of the inputs (measured on AVX-512 with SSE4 for the
+/// tail: a single-element normalize 42 ns, nlerp 98 ns; on SCALAR 17 and 18 ns), and one lane
+/// computes each element alone, so from three elements on the narrowest SIMD block is cheaper.
+constexpr std::size_t kOneLaneTail = 2;
+
 /// Runs a batch as call(kernels, first, count): the whole batch on the active target, except that
 /// with the default target a tail shorter than its block (n mod lanes elements; a single-element
-/// call is all tail) runs on the narrowest SIMD target instead. A wide target computes a tail as
-/// a whole padded block, 16 lanes on AVX-512 for one element; on 4 lanes that costs a quarter.
-/// A forced target (select_target, ROTORCERT_SIMD_TARGET) runs everything itself, so that the
-/// tests of each target see its own tail code.
+/// call is all tail) runs on the one-lane target (kOneLaneTail elements at most) or on the
+/// narrowest SIMD target, if it is narrower than the active one. A forced target
+/// (select_target, ROTORCERT_SIMD_TARGET) runs everything itself, so that the tests of each
+/// target see its own tail code.
 template <class Call>
 int split_tail(std::size_t n, const Call& call) {
   State& s = state();
   const Kernels& wide = *s.active.load(std::memory_order_relaxed);
-  const Kernels* narrow = s.narrowest;
-  if (s.forced.load(std::memory_order_relaxed) || narrow == nullptr || narrow->lanes >= wide.lanes)
-    return call(wide, 0, n);
+  if (s.forced.load(std::memory_order_relaxed) || wide.lanes == 1) return call(wide, 0, n);
   const std::size_t full = n - n % wide.lanes;
   if (full != 0)
     if (const int rc = call(wide, 0, full); rc != 0) return rc;
-  return full == n ? 0 : call(*narrow, full, n - full);
+  if (full == n) return 0;
+  const std::size_t tail = n - full;
+  const Kernels* k = &wide;
+  if (s.one_lane != nullptr && tail <= kOneLaneTail) k = s.one_lane;
+  else if (s.narrowest != nullptr && s.narrowest->lanes < wide.lanes) k = s.narrowest;
+  return call(*k, full, tail);
 }
 
 }  // namespace

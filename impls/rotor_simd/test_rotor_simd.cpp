@@ -1276,7 +1276,7 @@ TEST(RotorSimdFastPaths, QlbBlocksWithOneUnusualLane) {
   }
 }
 
-// ---- dispatch: a short tail runs on the narrowest target ---------------------------------------
+// ---- dispatch: a short tail runs on the one-lane or the narrowest target ---------------------
 
 /// Lanes of binary32 vectors per x86 Highway target (SCALAR and EMU128 are not SIMD targets).
 std::size_t lanes_of(const std::string& target) {
@@ -1286,25 +1286,10 @@ std::size_t lanes_of(const std::string& target) {
   return it == lanes.end() ? 0 : it->second;
 }
 
-// With the default target, the n mod L elements after the last full block of L lanes run on the
-// narrowest SIMD target (a single-element call costs a quarter of a 16-lane block there), the
-// full blocks on the default one. Bit for bit: the full blocks as the default target computes
-// them, the tail as the narrowest computes it alone; a wrong offset or width in the split would
-// move or mix elements.
-TEST(RotorSimdDispatch, TheTailOfADefaultBatchRunsOnTheNarrowestTarget) {
-  const TargetGuard guard;
-  if (const char* env = std::getenv("ROTORCERT_SIMD_TARGET"); env != nullptr && *env != '\0')
-    GTEST_SKIP() << "ROTORCERT_SIMD_TARGET=" << env << " forces every element onto one target";
-  ASSERT_EQ(impl().select_target(nullptr), 0);
-  const std::string wide = impl().current_target();
-  std::string narrow;
-  for (const std::string& t : targets())
-    if (lanes_of(t) != 0 && (narrow.empty() || lanes_of(t) <= lanes_of(narrow))) narrow = t;
-  if (lanes_of(wide) == 0 || narrow.empty()) GTEST_SKIP() << "default target " << wide << " is not an x86 SIMD target";
-  const std::size_t full = 2 * lanes_of(wide), n = full + 3;
-  const bool split = lanes_of(narrow) < lanes_of(wide);
-  std::printf("  default %s, tail on %s\n", wide.c_str(), split ? narrow.c_str() : wide.c_str());
-
+/// The default target's batch of two full blocks and a tail of `tail` elements against the full
+/// blocks computed on `wide` and the tail on `tail_target`, each forced.
+void check_split(const std::string& wide, const std::string& tail_target, std::size_t tail) {
+  const std::size_t full = 2 * lanes_of(wide), n = full + tail;
   Rng r;
   const std::size_t k = 4;
   std::vector<float> a, b, t, v, q, w;
@@ -1343,18 +1328,40 @@ TEST(RotorSimdDispatch, TheTailOfADefaultBatchRunsOnTheNarrowestTarget) {
     ASSERT_EQ(impl().select_target(nullptr), 0);
     op.call(0, n, got.data(), got_st.data());
     ASSERT_EQ(impl().select_target(wide.c_str()), 0);
-    if (split) {
-      op.call(0, full, want.data(), want_st.data());
-      ASSERT_EQ(impl().select_target(narrow.c_str()), 0);
-      op.call(full, n - full, want.data() + full * op.width, want_st.data() + full);
-    } else {
-      op.call(0, n, want.data(), want_st.data());
-    }
+    op.call(0, full, want.data(), want_st.data());
+    ASSERT_EQ(impl().select_target(tail_target.c_str()), 0);
+    op.call(full, n - full, want.data() + full * op.width, want_st.data() + full);
     for (std::size_t i = 0; i < n; ++i) {
       EXPECT_EQ(got_st[i], want_st[i]) << op.name << " element " << i;
       EXPECT_EQ(0, std::memcmp(&got[i * op.width], &want[i * op.width], op.width * sizeof(float)))
-          << op.name << " element " << i << " of " << n << ": not the bits of " << (i < full || !split ? wide : narrow);
+          << op.name << " element " << i << " of " << n << ": not the bits of " << (i < full ? wide : tail_target);
     }
+  }
+}
+
+// With the default target, the n mod L elements after the last full block of L lanes run on the
+// one-lane SCALAR target when they are one or two (a single-element call costs a padded block on
+// any SIMD target), else on the narrowest SIMD target; the full blocks on the default one. Bit
+// for bit: the full blocks as the default target computes them, the tail as its target computes
+// it alone; a wrong offset, width or choice of target in the split would move or mix elements.
+TEST(RotorSimdDispatch, TheTailOfADefaultBatchRunsOnTheOneLaneOrTheNarrowestTarget) {
+  const TargetGuard guard;
+  if (const char* env = std::getenv("ROTORCERT_SIMD_TARGET"); env != nullptr && *env != '\0')
+    GTEST_SKIP() << "ROTORCERT_SIMD_TARGET=" << env << " forces every element onto one target";
+  ASSERT_EQ(impl().select_target(nullptr), 0);
+  const std::string wide = impl().current_target();
+  std::string narrow;
+  bool has_scalar = false;
+  for (const std::string& t : targets()) {
+    if (lanes_of(t) != 0 && (narrow.empty() || lanes_of(t) <= lanes_of(narrow))) narrow = t;
+    has_scalar = has_scalar || t == "SCALAR";
+  }
+  if (lanes_of(wide) == 0 || narrow.empty()) GTEST_SKIP() << "default target " << wide << " is not an x86 SIMD target";
+  ASSERT_TRUE(has_scalar) << "rotor_simd lists no SCALAR target";
+  for (const std::size_t tail : {std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
+    const std::string tail_target = tail <= 2 ? "SCALAR" : lanes_of(narrow) < lanes_of(wide) ? narrow : wide;
+    std::printf("  default %s, a tail of %zu on %s\n", wide.c_str(), tail, tail_target.c_str());
+    check_split(wide, tail_target, tail);
   }
 }
 
