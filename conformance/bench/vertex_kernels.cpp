@@ -113,7 +113,6 @@ HWY_NOINLINE void SkinLbsF32(const Streams<float>& s, const float* palette) { Sk
 HWY_NOINLINE void SkinLbsF64(const Streams<double>& s, const double* palette) { SkinLbs(s, palette); }
 HWY_NOINLINE void SkinDqsF32(const Streams<float>& s, const float* palette) { SkinDqs(s, palette); }
 HWY_NOINLINE void SkinDqsF64(const Streams<double>& s, const double* palette) { SkinDqs(s, palette); }
-HWY_NOINLINE const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace rotorcert::bench::vertices::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -125,13 +124,11 @@ HWY_EXPORT(SkinLbsF32);
 HWY_EXPORT(SkinLbsF64);
 HWY_EXPORT(SkinDqsF32);
 HWY_EXPORT(SkinDqsF64);
-HWY_EXPORT(TargetName);
 
 void skin_lbs(const Streams<float>& v, const float* palette) { HWY_DYNAMIC_DISPATCH(SkinLbsF32)(v, palette); }
 void skin_lbs(const Streams<double>& v, const double* palette) { HWY_DYNAMIC_DISPATCH(SkinLbsF64)(v, palette); }
 void skin_dqs(const Streams<float>& v, const float* palette) { HWY_DYNAMIC_DISPATCH(SkinDqsF32)(v, palette); }
 void skin_dqs(const Streams<double>& v, const double* palette) { HWY_DYNAMIC_DISPATCH(SkinDqsF64)(v, palette); }
-const char* target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
 
 }  // namespace rotorcert::bench::vertices
 #endif  // HWY_ONCE

@@ -53,7 +53,4 @@ void skin_lbs(const Streams<double>& v, const double* palette);
 void skin_dqs(const Streams<float>& v, const float* palette);
 void skin_dqs(const Streams<double>& v, const double* palette);
 
-/// The Highway target dynamic dispatch chose for these loops, e.g. "AVX3".
-const char* target_name();
-
 }  // namespace rotorcert::bench::vertices
