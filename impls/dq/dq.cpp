@@ -35,6 +35,7 @@ namespace {
 
 namespace rci = rotorcert::impl;
 namespace runtime = rotorcert::runtime;
+using rci::largest_weight;
 using rci::Status;
 
 // ---- small value types ------------------------------------------------------------------------
@@ -97,17 +98,6 @@ template <class S> bool valid(const Quat<S>& q) { return finite(q) && !is_zero(q
 /// A usable dual quaternion: every component finite, the real part nonzero.
 template <class S> bool valid(const Dual<S>& s) { return valid(s.r) && finite(s.d); }
 
-/// EDGE-9: at least one weight, every weight finite and >= 0 (-0 counts as 0), some weight > 0.
-/// Returns the largest weight (the blends divide by it so that their sums cannot overflow), or
-/// 0 when the weights are bad.
-template <class S> S largest_weight(std::span<const S> w) {
-  S largest = 0;
-  for (S x : w) {
-    if (!finite(x) || x < 0) return 0;
-    largest = std::max(largest, x);
-  }
-  return largest;
-}
 
 // ---- quaternions ----------------------------------------------------------------------------------
 
@@ -363,14 +353,9 @@ Dual<S> dlb(std::size_t k, Real real, Unit unit, std::span<const S> w, S w_max) 
 /// written nothing, where a test fails: the caller then takes the checked element path.
 template <class S>
 bool dlb_ordinary(std::size_t k, const S* d, const S* w, Dual<S>& out) {
-  S w_max = 0;
-  std::size_t p = k;
-  for (std::size_t i = 0; i < k; ++i) {
-    if (!(w[i] >= 0 && w[i] <= std::numeric_limits<S>::max())) return false;  // NaN, < 0, +inf (EDGE-9)
-    if (w[i] > w_max) w_max = w[i];
-    if (p == k && w[i] > 0) p = i;
-  }
-  if (p == k) return false;
+  S w_max;
+  std::size_t p;
+  if (!rci::ordinary_weights(std::span<const S>(w, k), w_max, p)) return false;
   const Quat<S> pivot{d[8 * p], d[8 * p + 1], d[8 * p + 2], d[8 * p + 3]};
   Dual<S> sum{{0, 0, 0, 0}, {0, 0, 0, 0}};
   for (std::size_t i = 0; i < k; ++i) {

@@ -33,6 +33,7 @@ namespace {
 namespace rci = rotorcert::impl;
 namespace runtime = rotorcert::runtime;
 namespace pga = rotorcert::motor_pga;
+using rci::largest_weight;
 using rci::Status;
 using pga::Motor;
 using pga::V3;
@@ -49,16 +50,6 @@ template <class S> bool valid_dq(const rci::DualQuat<S>& d) {
   return finite(d) && (d[0] != 0 || d[1] != 0 || d[2] != 0 || d[3] != 0);
 }
 
-/// EDGE-9: the largest weight, or 0 if the set is empty, a weight is NaN/Inf/negative, or all
-/// are zero (-0 counts as 0).
-template <class S> S largest_weight(std::span<const S> w) {
-  S largest = 0;
-  for (S x : w) {
-    if (!finite(x) || x < 0) return 0;
-    largest = std::max(largest, x);
-  }
-  return largest;
-}
 
 
 /// <A ~B>_0 of the rotor parts for the hemisphere rules (EDGE-3), from the inputs as given, each
@@ -124,14 +115,9 @@ Motor<S> blend(std::size_t k, Raw raw, Unit unit_influence, std::span<const S> w
 /// Returns false, having written nothing, where a test fails: the caller takes the checked path.
 template <class S>
 bool blend_ordinary(std::size_t k, const S* d, const S* w, Motor<S>& out) {
-  S w_max = 0;
-  std::size_t p = k;
-  for (std::size_t i = 0; i < k; ++i) {
-    if (!(w[i] >= 0 && w[i] <= std::numeric_limits<S>::max())) return false;  // NaN, < 0, +inf (EDGE-9)
-    if (w[i] > w_max) w_max = w[i];
-    if (p == k && w[i] > 0) p = i;
-  }
-  if (p == k) return false;
+  S w_max;
+  std::size_t p;
+  if (!rci::ordinary_weights(std::span<const S>(w, k), w_max, p)) return false;
   const std::array<S, 4> pivot{d[8 * p + 3], -d[8 * p], -d[8 * p + 1], -d[8 * p + 2]};  // (s, e23, e31, e12)
   Motor<S> sum{0, 0, 0, 0, 0, 0, 0, 0};
   for (std::size_t i = 0; i < k; ++i) {

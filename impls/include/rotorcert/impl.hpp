@@ -22,6 +22,7 @@
 // used as is.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -59,6 +60,34 @@ std::size_t first_positive_weight(std::span<const S> w) {
   std::size_t p = 0;
   while (p + 1 < w.size() && !(w[p] > S(0))) ++p;
   return p;
+}
+
+/// EDGE-9 as the blends that divide by the largest weight check it: the largest weight (their
+/// sums are taken over w_i / w_max, so that they cannot overflow), or 0 when the set is empty, a
+/// weight is NaN, infinite or negative, or all are zero (-0 counts as 0).
+template <class S>
+S largest_weight(std::span<const S> w) {
+  S largest = 0;
+  for (S x : w) {
+    if (!(x >= S(0) && x <= std::numeric_limits<S>::max())) return 0;  // NaN, negative, +Inf
+    largest = std::max(largest, x);
+  }
+  return largest;
+}
+
+/// The weights' half of a blend fast path's cheap test (EDGE-9): every weight in [0, max] and
+/// some > 0. Sets the largest weight and the pivot (first_positive_weight) and returns true;
+/// false, leaving them unspecified, sends the element to the checked path.
+template <class S>
+bool ordinary_weights(std::span<const S> w, S& w_max, std::size_t& pivot) {
+  w_max = 0;
+  pivot = w.size();
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    if (!(w[i] >= 0 && w[i] <= std::numeric_limits<S>::max())) return false;  // NaN, < 0, +inf
+    if (w[i] > w_max) w_max = w[i];
+    if (pivot == w.size() && w[i] > 0) pivot = i;
+  }
+  return pivot != w.size();
 }
 
 template <class S> using Quat = std::array<S, 4>;      // [x, y, z, w]
