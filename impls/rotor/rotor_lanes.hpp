@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1 and APPLY-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
+// NORM-1, COMPOSE-1, APPLY-1 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
 // once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <limits>
 
+#include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
 #include "rotor3.hpp"
@@ -98,6 +99,53 @@ struct ApplyVectorLanes {
       const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
       const impl::Vec3<S> y = sandwich_vector(r, impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
       for (std::size_t c = 0; c < 3; ++c) out[c][l] = y[c];
+    }
+  }
+};
+
+/// NLERP-1 as RotorOps::nlerp computes it with Method2 where |a|^2 and |b|^2 are ordinary, t is
+/// finite, the filter of runtime/exact_sign.hpp decides the hemisphere sign (as hemisphere_sign()
+/// then does) and the sum's |.|^2 is ordinary: R_A = Phi(a/|a|), R_B' = +-Phi(b/|b|),
+/// normalized(k R_A + u (R_B' - R_A)) with k = 1/max(1, |t|), u = t k, read back by Phi^-1.
+template <class S, std::size_t L>
+struct NlerpLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* a, const S* b, const S* t) {
+    S x[4][L], y[4][L], tt[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      for (std::size_t c = 0; c < 4; ++c) x[c][l] = a[4 * l + c], y[c][l] = b[4 * l + c];
+      tt[l] = t[l];
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S na = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const S nb = y[0][l] * y[0][l] + y[1][l] * y[1][l] + y[2][l] * y[2][l] + y[3][l] * y[3][l];
+      bool negative = false;
+      const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], y[0][l], y[1][l], y[2][l],
+                                                       y[3][l], negative);
+      constexpr S kMax = std::numeric_limits<S>::max();
+      const bool finite_t = (tt[l] <= kMax) & (tt[l] >= -kMax);
+      const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
+      const S sa = std::sqrt(na), sb = std::sqrt(nb);
+      const Rotor3<S> ra{x[3][l] / sa, -(x[0][l] / sa), -(x[1][l] / sa), -(x[2][l] / sa)};
+      // The flip as a multiplication by -1 (exact, = negated()), so that no branch depends on the lane.
+      const S sign = S(1) - S(2) * S(negative);
+      const Rotor3<S> rb{sign * (y[3][l] / sb), sign * -(y[0][l] / sb), sign * -(y[1][l] / sb), sign * -(y[2][l] / sb)};
+      // fmax, not std::max: GCC 12 leaves the select of std::max as a branch and the loop
+      // scalar; both give max(1, |t|) for every t (1 for NaN, where the lane is not ok anyway).
+      const S k = S(1) / std::fmax(S(1), std::abs(tt[l])), u = tt[l] * k;
+      const Rotor3<S> sum{k * ra.s + u * (rb.s - ra.s), k * ra.e23 + u * (rb.e23 - ra.e23),
+                          k * ra.e31 + u * (rb.e31 - ra.e31), k * ra.e12 + u * (rb.e12 - ra.e12)};
+      // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
+      const S ns2 = sum.e23 * sum.e23 + sum.e31 * sum.e31 + sum.e12 * sum.e12 + sum.s * sum.s;
+      const bool ordinary_sum = runtime::is_ordinary_square_lane(ns2);
+      ok[l] = Flag(ordinary_a & ordinary_b & finite_t & decided & ordinary_sum);
+      const S ns = std::sqrt(ns2);
+      out[0][l] = -(sum.e23 / ns);
+      out[1][l] = -(sum.e31 / ns);
+      out[2][l] = -(sum.e12 / ns);
+      out[3][l] = sum.s / ns;
     }
   }
 };

@@ -2,7 +2,8 @@
 // runtime/lane_blocks.hpp, and every element a lane does not take (its cheap tests failed, or it
 // is one of the last n mod 4) by the element function through impl.hpp's Elementwise loop, so
 // that the batch keeps the element function's outcomes, NaN poisoning of DOMAIN_ERROR included.
-// For the ops of one or two inputs and one output array (normalize, compose, apply_vector).
+// For the ops of one or two inputs (and a parameter t) and one output array (normalize, compose,
+// apply_vector, nlerp).
 #pragma once
 
 #include <cstddef>
@@ -20,6 +21,18 @@ int lanes_or_element(std::size_t n, const S* a, const S* b, S* out, std::uint8_t
   using Checked = impl::detail::Elementwise<Element, decltype(Element)>;
   const auto element = [&](std::size_t e) { Checked::run(1, a + A * e, b + B * e, out + Out * e, status + e); };
   in_lanes_or_checked<Kernel>(n, a, A, b, B, [](auto& k, const S* x, const S* y) { k.run(x, y); },
+                              copy_lane_outputs<Out>(out, status), element, element);
+  return 0;
+}
+
+/// Two inputs of A scalars and one scalar per element (t of the interpolations), Out output
+/// scalars; Kernel<S, L>::run(a, b, t).
+template <template <class, std::size_t> class Kernel, auto Element, std::size_t A, std::size_t Out, class S>
+int lanes_or_element(std::size_t n, const S* a, const S* b, const S* t, S* out, std::uint8_t* status) {
+  using Checked = impl::detail::Elementwise<Element, decltype(Element)>;
+  const auto element = [&](std::size_t e) { Checked::run(1, a + A * e, b + A * e, t + e, out + Out * e, status + e); };
+  in_lanes_or_checked<Kernel>(n, a, A, b, A,
+                              [a, t](auto& k, const S* x, const S* y) { k.run(x, y, t + (x - a) / A); },
                               copy_lane_outputs<Out>(out, status), element, element);
   return 0;
 }

@@ -18,12 +18,14 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
+/// NORM-1, COMPOSE-1, APPLY-1, NLERP-1 (where the table has nlerp), EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
 /// elements: 3 blocks of 16, 3 of 4 and one alone; among ordinary quaternions of sizes 1/4 .. 4
 /// (EDGE-5) sit ones scaled by 2^+-E beyond the ordinary range, zeros, subnormals, NaN and
-/// infinities (EDGE-6..8), so lanes of one block take different paths. Any difference between
+/// infinities (EDGE-6..8), and for nlerp t in [-1/2, 3/2] beside NaN and 1e30, pairs with b = -a
+/// (the flip) and pairs with a.b = 0 exactly (EDGE-3's tie, which the lanes' filter cannot
+/// decide), so lanes of one block take different paths. Any difference between
 /// the lanes' arithmetic and the element function's shows as a bit.
 template <class S>
 void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
@@ -31,16 +33,21 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
   constexpr std::size_t kCases = 61;
   std::mt19937_64 gen(61);
   std::uniform_real_distribution<double> unit(-1, 1), size(0.25, 4);
-  std::vector<S> a(4 * kCases), b(4 * kCases), v(3 * kCases);
+  std::vector<S> a(4 * kCases), b(4 * kCases), v(3 * kCases), t(kCases);
   for (std::size_t i = 0; i < kCases; ++i) {
     for (std::size_t c = 0; c < 4; ++c) a[4 * i + c] = S(unit(gen) * size(gen)), b[4 * i + c] = S(unit(gen) * size(gen));
     for (std::size_t c = 0; c < 3; ++c) v[3 * i + c] = S(unit(gen) * 10);
+    t[i] = S(unit(gen) + 0.5);
     switch (i % 11) {  // the specials, spread over blocks and lanes
       case 2: for (std::size_t c = 0; c < 4; ++c) a[4 * i + c] = std::ldexp(a[4 * i + c], E); break;
+      case 3: t[i] = std::numeric_limits<S>::quiet_NaN(); break;
+      case 4: t[i] = S(1e30); break;
       case 5: for (std::size_t c = 0; c < 4; ++c) b[4 * i + c] = std::ldexp(b[4 * i + c], -E); break;
+      case 6: for (std::size_t c = 0; c < 4; ++c) b[4 * i + c] = -a[4 * i + c]; break;
       case 7: a[4 * i] = a[4 * i + 1] = a[4 * i + 2] = a[4 * i + 3] = S(i % 2 ? -0.0 : 0.0); break;
       case 8: a[4 * i + 1] = std::numeric_limits<S>::denorm_min(), a[4 * i] = a[4 * i + 2] = a[4 * i + 3] = 0; break;
       case 9: v[3 * i + 2] = std::numeric_limits<S>::infinity(); b[4 * i + 3] = std::numeric_limits<S>::quiet_NaN(); break;
+      case 10: b[4 * i] = -a[4 * i + 1], b[4 * i + 1] = a[4 * i], b[4 * i + 2] = -a[4 * i + 3], b[4 * i + 3] = a[4 * i + 2]; break;
       default: break;
     }
   }
@@ -65,6 +72,13 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
     ops.apply_vector(1, &a[4 * i], &v[3 * i], one.data(), &st1);
     EXPECT_EQ(st[i], st1) << "apply_vector " << i;
     EXPECT_TRUE(same(&batch[3 * i], one.data(), 3)) << "apply_vector element " << i;
+  }
+  if (ops.nlerp == nullptr) return;
+  ASSERT_EQ(ops.nlerp(kCases, a.data(), b.data(), t.data(), batch.data(), st.data()), 0);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    ops.nlerp(1, &a[4 * i], &b[4 * i], &t[i], one.data(), &st1);
+    EXPECT_EQ(st[i], st1) << "nlerp " << i;
+    EXPECT_TRUE(same(&batch[4 * i], one.data(), 4)) << "nlerp element " << i;
   }
 }
 
