@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, APPLY-1 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
+// NORM-1, COMPOSE-1, APPLY-1, APPLY-2, MAT-1 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
 // once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -78,7 +78,7 @@ struct ComposeLanes {
 };
 
 /// APPLY-1 as RotorOps::apply_vector computes it for ordinary |q|^2 and finite v:
-/// sandwich_vector(Phi(normalized(q)), v).
+/// sandwich_vector(Phi(normalized(q)), v); and APPLY-2, whose sandwich_bivector is the same.
 template <class S, std::size_t L>
 struct ApplyVectorLanes {
   S out[3][L];
@@ -99,6 +99,28 @@ struct ApplyVectorLanes {
       const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
       const impl::Vec3<S> y = sandwich_vector(r, impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
       for (std::size_t c = 0; c < 3; ++c) out[c][l] = y[c];
+    }
+  }
+};
+
+/// MAT-1 as RotorOps::to_matrix computes it for ordinary |q|^2: to_matrix(Phi(normalized(q))).
+template <class S, std::size_t L>
+struct ToMatrixLanes {
+  S out[9][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      ok[l] = Flag(runtime::is_ordinary_square_lane(n2));
+      const S n = std::sqrt(n2);
+      const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
+      const impl::Mat3<S> m = to_matrix(r);
+      out[0][l] = m[0], out[1][l] = m[1], out[2][l] = m[2], out[3][l] = m[3], out[4][l] = m[4];
+      out[5][l] = m[5], out[6][l] = m[6], out[7][l] = m[7], out[8][l] = m[8];
     }
   }
 };
@@ -128,24 +150,26 @@ struct NlerpLanes {
       const bool finite_t = (tt[l] <= kMax) & (tt[l] >= -kMax);
       const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
       const S sa = std::sqrt(na), sb = std::sqrt(nb);
-      const Rotor3<S> ra{x[3][l] / sa, -(x[0][l] / sa), -(x[1][l] / sa), -(x[2][l] / sa)};
-      // The flip as a multiplication by -1 (exact, = negated()), so that no branch depends on the lane.
+      // R_A and R_B' = +-Phi(b/|b|) coefficient by coefficient (s, e23, e31, e12); the flip as a
+      // multiplication by -1 (exact, = negated()), so that no branch depends on the lane.
       const S sign = S(1) - S(2) * S(negative);
-      const Rotor3<S> rb{sign * (y[3][l] / sb), sign * -(y[0][l] / sb), sign * -(y[1][l] / sb), sign * -(y[2][l] / sb)};
+      const S as = x[3][l] / sa, a23 = -(x[0][l] / sa), a31 = -(x[1][l] / sa), a12 = -(x[2][l] / sa);
+      const S bs = sign * (y[3][l] / sb), b23 = sign * -(y[0][l] / sb), b31 = sign * -(y[1][l] / sb),
+              b12 = sign * -(y[2][l] / sb);
       // fmax, not std::max: GCC 12 leaves the select of std::max as a branch and the loop
       // scalar; both give max(1, |t|) for every t (1 for NaN, where the lane is not ok anyway).
       const S k = S(1) / std::fmax(S(1), std::abs(tt[l])), u = tt[l] * k;
-      const Rotor3<S> sum{k * ra.s + u * (rb.s - ra.s), k * ra.e23 + u * (rb.e23 - ra.e23),
-                          k * ra.e31 + u * (rb.e31 - ra.e31), k * ra.e12 + u * (rb.e12 - ra.e12)};
+      const S ss = k * as + u * (bs - as), s23 = k * a23 + u * (b23 - a23), s31 = k * a31 + u * (b31 - a31),
+              s12 = k * a12 + u * (b12 - a12);
       // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
-      const S ns2 = sum.e23 * sum.e23 + sum.e31 * sum.e31 + sum.e12 * sum.e12 + sum.s * sum.s;
+      const S ns2 = s23 * s23 + s31 * s31 + s12 * s12 + ss * ss;
       const bool ordinary_sum = runtime::is_ordinary_square_lane(ns2);
       ok[l] = Flag(ordinary_a & ordinary_b & finite_t & decided & ordinary_sum);
       const S ns = std::sqrt(ns2);
-      out[0][l] = -(sum.e23 / ns);
-      out[1][l] = -(sum.e31 / ns);
-      out[2][l] = -(sum.e12 / ns);
-      out[3][l] = sum.s / ns;
+      out[0][l] = -(s23 / ns);
+      out[1][l] = -(s31 / ns);
+      out[2][l] = -(s12 / ns);
+      out[3][l] = ss / ns;
     }
   }
 };

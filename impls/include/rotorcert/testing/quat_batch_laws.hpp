@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1, NLERP-1 (where the table has nlerp), EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, APPLY-2, MAT-1 and NLERP-1, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
 /// elements: 3 blocks of 16, 3 of 4 and one alone; among ordinary quaternions of sizes 1/4 .. 4
@@ -72,6 +72,23 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
     ops.apply_vector(1, &a[4 * i], &v[3 * i], one.data(), &st1);
     EXPECT_EQ(st[i], st1) << "apply_vector " << i;
     EXPECT_TRUE(same(&batch[3 * i], one.data(), 3)) << "apply_vector element " << i;
+  }
+  if (ops.apply_bivector != nullptr) {
+    ASSERT_EQ(ops.apply_bivector(kCases, a.data(), v.data(), batch.data(), st.data()), 0);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      ops.apply_bivector(1, &a[4 * i], &v[3 * i], one.data(), &st1);
+      EXPECT_EQ(st[i], st1) << "apply_bivector " << i;
+      EXPECT_TRUE(same(&batch[3 * i], one.data(), 3)) << "apply_bivector element " << i;
+    }
+  }
+  if (ops.to_matrix != nullptr) {
+    std::vector<S> mats(9 * kCases), mat(9);
+    ASSERT_EQ(ops.to_matrix(kCases, a.data(), mats.data(), st.data()), 0);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      ops.to_matrix(1, &a[4 * i], mat.data(), &st1);
+      EXPECT_EQ(st[i], st1) << "to_matrix " << i;
+      EXPECT_TRUE(same(&mats[9 * i], mat.data(), 9)) << "to_matrix element " << i;
+    }
   }
   if (ops.nlerp == nullptr) return;
   ASSERT_EQ(ops.nlerp(kCases, a.data(), b.data(), t.data(), batch.data(), st.data()), 0);
