@@ -604,24 +604,32 @@ struct RotorOps {
   /// theta = 2 atan2(|B|, s) in [0, 2 pi] and u = -B/|B| (B's coefficients as a vector).
   static Status to_axis_angle(const Q& q, S& angle, V& axis) {
     if (!is_rotation(q)) return bad;
-    const Rotor3<S> r = Conv::in(q);
-    angle = S(2) * std::atan2(norm3(r.e23, r.e31, r.e12), r.s);
-    if (zero_vector_part(q)) {
-      axis = {S(0), S(0), S(1)};
-    } else {
-      const V b = plane_of(q);
-      axis = {-b[0], -b[1], -b[2]};
-    }
+    angle = angle_of(q);
+    axis = axis_of(q);
     return ok;
   }
-  /// ABI version 3, AXANG-3 and AXANG-4: the two halves of to_axis_angle.
+  /// ABI version 3, AXANG-3 and AXANG-4: the two halves of to_axis_angle, each computing only
+  /// its own half (the same values as to_axis_angle's).
   static Status to_angle(const Q& q, S& angle) {
-    V axis;
-    return to_axis_angle(q, angle, axis);
+    if (!is_rotation(q)) return bad;
+    angle = angle_of(q);
+    return ok;
   }
   static Status to_axis(const Q& q, V& axis) {
-    S angle;
-    return to_axis_angle(q, angle, axis);
+    if (!is_rotation(q)) return bad;
+    axis = axis_of(q);
+    return ok;
+  }
+  /// theta of the rotor of q (a rotation), through the method's conversion.
+  static S angle_of(const Q& q) {
+    const Rotor3<S> r = Conv::in(q);
+    return S(2) * std::atan2(norm3(r.e23, r.e31, r.e12), r.s);
+  }
+  /// u of q (a rotation): -B/|B| from q's vector part (plane_of), +z for the identity's.
+  static V axis_of(const Q& q) {
+    if (zero_vector_part(q)) return {S(0), S(0), S(1)};
+    const V b = plane_of(q);
+    return {-b[0], -b[1], -b[2]};
   }
   /// ABI version 3, SQRT-1: sqrt(R) = (1 + R)/|1 + R| for the unit rotor R = s + B of q, half the
   /// angle about the same plane. For s < 0, 1 + s = |B|^2/(1 - s) (R ~R = 1) without cancellation,

@@ -76,6 +76,10 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("NORM-1");
   RC_CLAUSE("COMPOSE-1");
   RC_CLAUSE("APPLY-1");
+  RC_CLAUSE("APPLY-2");
+  RC_CLAUSE("MAT-1");
+  RC_CLAUSE("NLERP-1");
+  RC_CLAUSE("EDGE-3");
   RC_CLAUSE("EDGE-5");
   RC_CLAUSE("EDGE-8");
   rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<float>(m2f());
