@@ -30,6 +30,25 @@ namespace rotorcert::rotor::lanes {
 /// A lane flag, 1 or 0: bool arrays do not vectorise.
 using Flag = std::int32_t;
 
+/// A block's quaternions in SoA lanes: x[c][l] = q[4 l + c].
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline void load_lanes(const S* q, S (&x)[4][L]) {
+  for (std::size_t l = 0; l < L; ++l)
+    for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+}
+
+/// |q|^2 of lane l, in norm2()'s order.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline S norm2_lane(const S (&x)[4][L], std::size_t l) {
+  return x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+}
+
+/// Method2::in of lane l where |q|^2 is ordinary, given n = sqrt(|q|^2): Phi(q/|q|).
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline Rotor3<S> unit_rotor_lane(const S (&x)[4][L], std::size_t l, S n) {
+  return {x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
+}
+
 /// NORM-1 as RotorOps::normalize with Method2 computes it: Phi^-1(Phi(q/|q|)) = normalized(q),
 /// q / sqrt(x^2 + y^2 + z^2 + w^2), four divisions.
 template <class S, std::size_t L>
@@ -39,10 +58,9 @@ struct NormalizeLanes {
 
   void run(const S* q, const S* /*unused*/) {
     S x[4][L];
-    for (std::size_t l = 0; l < L; ++l)
-      for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+    load_lanes(q, x);
     for (std::size_t l = 0; l < L; ++l) {
-      const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const S n2 = norm2_lane(x, l);
       ok[l] = Flag(runtime::is_ordinary_square_lane(n2));
       const S n = std::sqrt(n2);
       for (std::size_t c = 0; c < 4; ++c) out[c][l] = x[c][l] / n;
@@ -59,11 +77,10 @@ struct ComposeLanes {
 
   void run(const S* a, const S* b) {
     S x[4][L], y[4][L];
-    for (std::size_t l = 0; l < L; ++l)
-      for (std::size_t c = 0; c < 4; ++c) x[c][l] = a[4 * l + c], y[c][l] = b[4 * l + c];
+    load_lanes(a, x);
+    load_lanes(b, y);
     for (std::size_t l = 0; l < L; ++l) {
-      const S na = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
-      const S nb = y[0][l] * y[0][l] + y[1][l] * y[1][l] + y[2][l] * y[2][l] + y[3][l] * y[3][l];
+      const S na = norm2_lane(x, l), nb = norm2_lane(y, l);
       // Named before the &: clang warns on & of two calls.
       const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
       ok[l] = Flag(ordinary_a & ordinary_b);
@@ -91,13 +108,11 @@ struct ApplyVectorLanes {
       for (std::size_t c = 0; c < 3; ++c) p[c][l] = v[3 * l + c];
     }
     for (std::size_t l = 0; l < L; ++l) {
-      const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const S n2 = norm2_lane(x, l);
       const bool finite_v = runtime::finite3_lane(p[0][l], p[1][l], p[2][l]);
       const bool ordinary_q = runtime::is_ordinary_square_lane(n2);
       ok[l] = Flag(ordinary_q & finite_v);
-      const S n = std::sqrt(n2);
-      const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
-      const impl::Vec3<S> y = sandwich_vector(r, impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
+      const impl::Vec3<S> y = sandwich_vector(unit_rotor_lane(x, l, std::sqrt(n2)), impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
       for (std::size_t c = 0; c < 3; ++c) out[c][l] = y[c];
     }
   }
@@ -111,14 +126,11 @@ struct ToMatrixLanes {
 
   void run(const S* q, const S* /*unused*/) {
     S x[4][L];
-    for (std::size_t l = 0; l < L; ++l)
-      for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * l + c];
+    load_lanes(q, x);
     for (std::size_t l = 0; l < L; ++l) {
-      const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+      const S n2 = norm2_lane(x, l);
       ok[l] = Flag(runtime::is_ordinary_square_lane(n2));
-      const S n = std::sqrt(n2);
-      const Rotor3<S> r{x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
-      const impl::Mat3<S> m = to_matrix(r);
+      const impl::Mat3<S> m = to_matrix(unit_rotor_lane(x, l, std::sqrt(n2)));
       out[0][l] = m[0], out[1][l] = m[1], out[2][l] = m[2], out[3][l] = m[3], out[4][l] = m[4];
       out[5][l] = m[5], out[6][l] = m[6], out[7][l] = m[7], out[8][l] = m[8];
     }
@@ -136,13 +148,11 @@ struct NlerpLanes {
 
   void run(const S* a, const S* b, const S* t) {
     S x[4][L], y[4][L], tt[L];
+    load_lanes(a, x);
+    load_lanes(b, y);
+    for (std::size_t l = 0; l < L; ++l) tt[l] = t[l];
     for (std::size_t l = 0; l < L; ++l) {
-      for (std::size_t c = 0; c < 4; ++c) x[c][l] = a[4 * l + c], y[c][l] = b[4 * l + c];
-      tt[l] = t[l];
-    }
-    for (std::size_t l = 0; l < L; ++l) {
-      const S na = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
-      const S nb = y[0][l] * y[0][l] + y[1][l] * y[1][l] + y[2][l] * y[2][l] + y[3][l] * y[3][l];
+      const S na = norm2_lane(x, l), nb = norm2_lane(y, l);
       bool negative = false;
       const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], y[0][l], y[1][l], y[2][l],
                                                        y[3][l], negative);
@@ -153,7 +163,8 @@ struct NlerpLanes {
       // R_A and R_B' = +-Phi(b/|b|) coefficient by coefficient (s, e23, e31, e12); the flip as a
       // multiplication by -1 (exact, = negated()), so that no branch depends on the lane.
       const S sign = S(1) - S(2) * S(negative);
-      const S as = x[3][l] / sa, a23 = -(x[0][l] / sa), a31 = -(x[1][l] / sa), a12 = -(x[2][l] / sa);
+      const Rotor3<S> ra = unit_rotor_lane(x, l, sa);
+      const S as = ra.s, a23 = ra.e23, a31 = ra.e31, a12 = ra.e12;
       const S bs = sign * (y[3][l] / sb), b23 = sign * -(y[0][l] / sb), b31 = sign * -(y[1][l] / sb),
               b12 = sign * -(y[2][l] / sb);
       // fmax, not std::max: GCC 12 leaves the select of std::max as a branch and the loop

@@ -51,52 +51,35 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
       default: break;
     }
   }
-  const auto same = [](const S* x, const S* y, std::size_t count) { return std::memcmp(x, y, count * sizeof(S)) == 0; };
-  std::vector<S> batch(4 * kCases), one(4);
-  std::vector<std::uint8_t> st(kCases);
-  std::uint8_t st1;
-  ASSERT_EQ(ops.normalize(kCases, a.data(), batch.data(), st.data()), 0);
-  for (std::size_t i = 0; i < kCases; ++i) {
-    ops.normalize(1, &a[4 * i], one.data(), &st1);
-    EXPECT_EQ(st[i], st1) << "normalize " << i;
-    EXPECT_TRUE(same(&batch[4 * i], one.data(), 4)) << "normalize element " << i;
-  }
-  ASSERT_EQ(ops.compose(kCases, a.data(), b.data(), batch.data(), st.data()), 0);
-  for (std::size_t i = 0; i < kCases; ++i) {
-    ops.compose(1, &a[4 * i], &b[4 * i], one.data(), &st1);
-    EXPECT_EQ(st[i], st1) << "compose " << i;
-    EXPECT_TRUE(same(&batch[4 * i], one.data(), 4)) << "compose element " << i;
-  }
-  ASSERT_EQ(ops.apply_vector(kCases, a.data(), v.data(), batch.data(), st.data()), 0);
-  for (std::size_t i = 0; i < kCases; ++i) {
-    ops.apply_vector(1, &a[4 * i], &v[3 * i], one.data(), &st1);
-    EXPECT_EQ(st[i], st1) << "apply_vector " << i;
-    EXPECT_TRUE(same(&batch[3 * i], one.data(), 3)) << "apply_vector element " << i;
-  }
-  if (ops.apply_bivector != nullptr) {
-    ASSERT_EQ(ops.apply_bivector(kCases, a.data(), v.data(), batch.data(), st.data()), 0);
+  // One op: the batch of all cases against one-element calls from element i, `width` output
+  // scalars per element, bit for bit and status for status.
+  const auto check = [&](const char* name, std::size_t width, auto call) {
+    std::vector<S> batch(width * kCases), one(width);
+    std::vector<std::uint8_t> st(kCases);
+    std::uint8_t st1;
+    ASSERT_EQ(call(kCases, std::size_t{0}, batch.data(), st.data()), 0) << name;
     for (std::size_t i = 0; i < kCases; ++i) {
-      ops.apply_bivector(1, &a[4 * i], &v[3 * i], one.data(), &st1);
-      EXPECT_EQ(st[i], st1) << "apply_bivector " << i;
-      EXPECT_TRUE(same(&batch[3 * i], one.data(), 3)) << "apply_bivector element " << i;
+      call(1, i, one.data(), &st1);
+      EXPECT_EQ(st[i], st1) << name << " " << i;
+      EXPECT_EQ(0, std::memcmp(&batch[width * i], one.data(), width * sizeof(S))) << name << " element " << i;
     }
-  }
-  if (ops.to_matrix != nullptr) {
-    std::vector<S> mats(9 * kCases), mat(9);
-    ASSERT_EQ(ops.to_matrix(kCases, a.data(), mats.data(), st.data()), 0);
-    for (std::size_t i = 0; i < kCases; ++i) {
-      ops.to_matrix(1, &a[4 * i], mat.data(), &st1);
-      EXPECT_EQ(st[i], st1) << "to_matrix " << i;
-      EXPECT_TRUE(same(&mats[9 * i], mat.data(), 9)) << "to_matrix element " << i;
-    }
-  }
-  if (ops.nlerp == nullptr) return;
-  ASSERT_EQ(ops.nlerp(kCases, a.data(), b.data(), t.data(), batch.data(), st.data()), 0);
-  for (std::size_t i = 0; i < kCases; ++i) {
-    ops.nlerp(1, &a[4 * i], &b[4 * i], &t[i], one.data(), &st1);
-    EXPECT_EQ(st[i], st1) << "nlerp " << i;
-    EXPECT_TRUE(same(&batch[4 * i], one.data(), 4)) << "nlerp element " << i;
-  }
+  };
+  using Status = std::uint8_t*;
+  check("normalize", 4, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.normalize(n, &a[4 * i], o, s); });
+  check("compose", 4,
+        [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.compose(n, &a[4 * i], &b[4 * i], o, s); });
+  check("apply_vector", 3,
+        [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.apply_vector(n, &a[4 * i], &v[3 * i], o, s); });
+  if (ops.apply_bivector != nullptr)
+    check("apply_bivector", 3, [&](std::size_t n, std::size_t i, S* o, Status s) {
+      return ops.apply_bivector(n, &a[4 * i], &v[3 * i], o, s);
+    });
+  if (ops.to_matrix != nullptr)
+    check("to_matrix", 9, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.to_matrix(n, &a[4 * i], o, s); });
+  if (ops.nlerp != nullptr)
+    check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
+      return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
+    });
 }
 
 }  // namespace rotorcert::testing::quat_batch_laws
