@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, APPLY-1, APPLY-2, MAT-1 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
+// NORM-1, COMPOSE-1, APPLY-1, APPLY-2, MAT-1, AXANG-4 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
 // once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -133,6 +133,31 @@ struct ToMatrixLanes {
       const impl::Mat3<S> m = to_matrix(unit_rotor_lane(x, l, std::sqrt(n2)));
       out[0][l] = m[0], out[1][l] = m[1], out[2][l] = m[2], out[3][l] = m[3], out[4][l] = m[4];
       out[5][l] = m[5], out[6][l] = m[6], out[7][l] = m[7], out[8][l] = m[8];
+    }
+  }
+};
+
+/// AXANG-4 as RotorOps::to_axis computes it with Method2 where |q|^2 and |v|^2 are ordinary:
+/// -plane_of(q), the bivector of Phi((x, y, z, 0)/|v|) negated, which is v/|v| (two exact
+/// negations).
+template <class S, std::size_t L>
+struct ToAxisLanes {
+  S out[3][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L];
+    load_lanes(q, x);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2 = norm2_lane(x, l);
+      const S v2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l];  // norm2 of (x, y, z, 0)
+      // Named before the &: clang warns on & of two calls.
+      const bool ordinary_q = runtime::is_ordinary_square_lane(n2), ordinary_v = runtime::is_ordinary_square_lane(v2);
+      ok[l] = Flag(ordinary_q & ordinary_v);
+      const S n = std::sqrt(v2);
+      out[0][l] = x[0][l] / n;
+      out[1][l] = x[1][l] / n;
+      out[2][l] = x[2][l] / n;
     }
   }
 };

@@ -3,7 +3,7 @@
 // every operation in Cl(3,0) (impls/rotor/rotor3.hpp) and the quaternion read back by Phi^-1.
 // The same code as rotor_m1 except this conversion.
 //
-// normalize, compose, apply_vector, apply_bivector, to_matrix and nlerp batches run their
+// normalize, compose, apply_vector, apply_bivector, to_matrix, to_axis and nlerp batches run their
 // ordinary elements in SIMD lanes
 // (rotor/rotor_lanes.hpp: RotorOps' operations in RotorOps' order, so the same bits) and every
 // other element, and the last n mod 4, through RotorOps, which scales only where it must.
@@ -54,6 +54,10 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   /// MAT-1 batches.
   ROTORCERT_TARGET_CLONES_FLAT static int to_matrix_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::ToMatrixLanes, &Base::to_matrix, 4, 9>(n, q, out, status);
+  }
+  /// AXANG-4 batches (ABI version 3).
+  ROTORCERT_TARGET_CLONES_FLAT static int to_axis_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::ToAxisLanes, &Base::to_axis, 4, 3>(n, q, out, status);
   }
   /// NLERP-1 batches: lanes where the inputs are ordinary and the hemisphere filter decides.
   ROTORCERT_TARGET_CLONES_FLAT static int nlerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out,

@@ -82,8 +82,12 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("EDGE-3");
   RC_CLAUSE("EDGE-5");
   RC_CLAUSE("EDGE-8");
-  rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<float>(m2f());
-  rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<double>(m2d());
+  RC_CLAUSE("AXANG-4");
+  const rc_impl* f = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 0);
+  const rc_impl* d = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 1);
+  ASSERT_TRUE(f != nullptr && d != nullptr && f->f32_v3 != nullptr && d->f64_v3 != nullptr);
+  rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<float>(m2f(), f->f32_v3);
+  rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<double>(m2d(), d->f64_v3);
 }
 
 TEST(RotorM2, BadInputsAreDomainErrors) {

@@ -18,7 +18,8 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, APPLY-2, MAT-1 and NLERP-1, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, APPLY-2, MAT-1, NLERP-1 and (ops3)
+/// AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
 /// elements: 3 blocks of 16, 3 of 4 and one alone; among ordinary quaternions of sizes 1/4 .. 4
@@ -28,7 +29,7 @@ namespace rotorcert::testing::quat_batch_laws {
 /// decide), so lanes of one block take different paths. Any difference between
 /// the lanes' arithmetic and the element function's shows as a bit.
 template <class S>
-void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
+void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* ops3 = nullptr) {
   constexpr int E = std::is_same_v<S, float> ? 40 : 300;
   constexpr std::size_t kCases = 61;
   std::mt19937_64 gen(61);
@@ -47,6 +48,7 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
       case 7: a[4 * i] = a[4 * i + 1] = a[4 * i + 2] = a[4 * i + 3] = S(i % 2 ? -0.0 : 0.0); break;
       case 8: a[4 * i + 1] = std::numeric_limits<S>::denorm_min(), a[4 * i] = a[4 * i + 2] = a[4 * i + 3] = 0; break;
       case 9: v[3 * i + 2] = std::numeric_limits<S>::infinity(); b[4 * i + 3] = std::numeric_limits<S>::quiet_NaN(); break;
+      case 0: a[4 * i] = a[4 * i + 1] = a[4 * i + 2] = 0; break;  // no vector part: to_axis's +z
       case 10: b[4 * i] = -a[4 * i + 1], b[4 * i + 1] = a[4 * i], b[4 * i + 2] = -a[4 * i + 3], b[4 * i + 3] = a[4 * i + 2]; break;
       default: break;
     }
@@ -76,6 +78,8 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops) {
     });
   if (ops.to_matrix != nullptr)
     check("to_matrix", 9, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.to_matrix(n, &a[4 * i], o, s); });
+  if (ops3 != nullptr && ops3->to_axis != nullptr)
+    check("to_axis", 3, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops3->to_axis(n, &a[4 * i], o, s); });
   if (ops.nlerp != nullptr)
     check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
