@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, APPLY-1, APPLY-2, MAT-1, AXANG-4 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, AXANG-4 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
 // once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -114,6 +114,27 @@ struct ApplyVectorLanes {
       ok[l] = Flag(ordinary_q & finite_v);
       const impl::Vec3<S> y = sandwich_vector(unit_rotor_lane(x, l, std::sqrt(n2)), impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
       for (std::size_t c = 0; c < 3; ++c) out[c][l] = y[c];
+    }
+  }
+};
+
+/// INV-1 as RotorOps::inverse computes it with Method2 for ordinary |q|^2: Phi^-1(~Phi(q) / |q|^2),
+/// i.e. (-x, -y, -z, w) / |q|^2 divided component by component.
+template <class S, std::size_t L>
+struct InverseLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L];
+    load_lanes(q, x);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2 = norm2_lane(x, l);
+      ok[l] = Flag(runtime::is_ordinary_square_lane(n2));
+      out[0][l] = -(x[0][l] / n2);
+      out[1][l] = -(x[1][l] / n2);
+      out[2][l] = -(x[2][l] / n2);
+      out[3][l] = x[3][l] / n2;
     }
   }
 };

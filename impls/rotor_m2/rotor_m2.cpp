@@ -3,10 +3,10 @@
 // every operation in Cl(3,0) (impls/rotor/rotor3.hpp) and the quaternion read back by Phi^-1.
 // The same code as rotor_m1 except this conversion.
 //
-// normalize, compose, apply_vector, apply_bivector, to_matrix, to_axis and nlerp batches run their
-// ordinary elements in SIMD lanes
-// (rotor/rotor_lanes.hpp: RotorOps' operations in RotorOps' order, so the same bits) and every
-// other element, and the last n mod 4, through RotorOps, which scales only where it must.
+// normalize, compose, inverse, apply_vector, apply_bivector, to_matrix, to_axis and nlerp batches
+// run their ordinary elements in SIMD lanes (rotor/rotor_lanes.hpp: RotorOps' operations in
+// RotorOps' order, so the same bits) and every other element, and the last n mod 4, through
+// RotorOps, which scales only where it must.
 #include <cstddef>
 #include <cstdint>
 
@@ -50,6 +50,10 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   ROTORCERT_TARGET_CLONES_FLAT static int apply_bivector_batch(std::size_t n, const S* q, const S* b, S* out,
                                                               std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::ApplyVectorLanes, &Base::apply_bivector, 4, 3, 3>(n, q, b, out, status);
+  }
+  /// INV-1 batches.
+  ROTORCERT_TARGET_CLONES_FLAT static int inverse_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::InverseLanes, &Base::inverse, 4, 4>(n, q, out, status);
   }
   /// MAT-1 batches.
   ROTORCERT_TARGET_CLONES_FLAT static int to_matrix_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {

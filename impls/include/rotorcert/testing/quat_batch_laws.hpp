@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, APPLY-2, MAT-1, NLERP-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, NLERP-1 and (ops3)
 /// AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -70,6 +70,8 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
   check("normalize", 4, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.normalize(n, &a[4 * i], o, s); });
   check("compose", 4,
         [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.compose(n, &a[4 * i], &b[4 * i], o, s); });
+  if (ops.inverse != nullptr)
+    check("inverse", 4, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.inverse(n, &a[4 * i], o, s); });
   check("apply_vector", 3,
         [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.apply_vector(n, &a[4 * i], &v[3 * i], o, s); });
   if (ops.apply_bivector != nullptr)
