@@ -76,6 +76,7 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("NORM-1");
   RC_CLAUSE("COMPOSE-1");
   RC_CLAUSE("APPLY-1");
+  RC_CLAUSE("INV-1");
   RC_CLAUSE("APPLY-2");
   RC_CLAUSE("MAT-1");
   RC_CLAUSE("NLERP-1");
