@@ -98,7 +98,6 @@ template <class S> bool valid(const Quat<S>& q) { return finite(q) && !is_zero(q
 /// A usable dual quaternion: every component finite, the real part nonzero.
 template <class S> bool valid(const Dual<S>& s) { return valid(s.r) && finite(s.d); }
 
-
 // ---- quaternions ----------------------------------------------------------------------------------
 
 /// Binary exponent of the largest |component|: q scaled by 2^-e has its largest component in

@@ -50,8 +50,6 @@ template <class S> bool valid_dq(const rci::DualQuat<S>& d) {
   return finite(d) && (d[0] != 0 || d[1] != 0 || d[2] != 0 || d[3] != 0);
 }
 
-
-
 /// <A ~B>_0 of the rotor parts for the hemisphere rules (EDGE-3), from the inputs as given, each
 /// scaled by an exact power of two: normalised copies would turn an exact 0 (no flip) into
 /// +-tiny, and raw products could overflow.

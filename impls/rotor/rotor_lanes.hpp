@@ -1,5 +1,5 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, AXANG-4 and NLERP-1 of RotorOps<S, Method2> (rotor3.hpp) for L elements of a batch at
-// once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, AXANG-4 and NLERP-1 of RotorOps<S, Method2>
+// (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
 //
@@ -206,27 +206,25 @@ struct NlerpLanes {
       const bool finite_t = (tt[l] <= kMax) & (tt[l] >= -kMax);
       const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
       const S sa = std::sqrt(na), sb = std::sqrt(nb);
-      // R_A and R_B' = +-Phi(b/|b|) coefficient by coefficient (s, e23, e31, e12); the flip as a
-      // multiplication by -1 (exact, = negated()), so that no branch depends on the lane.
+      // R_B' = +-Phi(b/|b|): the flip as a multiplication by -1 (exact, = negated()), so that no
+      // branch depends on the lane.
       const S sign = S(1) - S(2) * S(negative);
-      const Rotor3<S> ra = unit_rotor_lane(x, l, sa);
-      const S as = ra.s, a23 = ra.e23, a31 = ra.e31, a12 = ra.e12;
-      const S bs = sign * (y[3][l] / sb), b23 = sign * -(y[0][l] / sb), b31 = sign * -(y[1][l] / sb),
-              b12 = sign * -(y[2][l] / sb);
+      const Rotor3<S> ra = unit_rotor_lane(x, l, sa), r = unit_rotor_lane(y, l, sb);
+      const Rotor3<S> rb{sign * r.s, sign * r.e23, sign * r.e31, sign * r.e12};
       // fmax, not std::max: GCC 12 leaves the select of std::max as a branch and the loop
       // scalar; both give max(1, |t|) for every t (1 for NaN, where the lane is not ok anyway).
       const S k = S(1) / std::fmax(S(1), std::abs(tt[l])), u = tt[l] * k;
-      const S ss = k * as + u * (bs - as), s23 = k * a23 + u * (b23 - a23), s31 = k * a31 + u * (b31 - a31),
-              s12 = k * a12 + u * (b12 - a12);
+      const Rotor3<S> sum{k * ra.s + u * (rb.s - ra.s), k * ra.e23 + u * (rb.e23 - ra.e23),
+                          k * ra.e31 + u * (rb.e31 - ra.e31), k * ra.e12 + u * (rb.e12 - ra.e12)};
       // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
-      const S ns2 = s23 * s23 + s31 * s31 + s12 * s12 + ss * ss;
+      const S ns2 = sum.e23 * sum.e23 + sum.e31 * sum.e31 + sum.e12 * sum.e12 + sum.s * sum.s;
       const bool ordinary_sum = runtime::is_ordinary_square_lane(ns2);
       ok[l] = Flag(ordinary_a & ordinary_b & finite_t & decided & ordinary_sum);
       const S ns = std::sqrt(ns2);
-      out[0][l] = -(s23 / ns);
-      out[1][l] = -(s31 / ns);
-      out[2][l] = -(s12 / ns);
-      out[3][l] = ss / ns;
+      out[0][l] = -(sum.e23 / ns);
+      out[1][l] = -(sum.e31 / ns);
+      out[2][l] = -(sum.e12 / ns);
+      out[3][l] = sum.s / ns;
     }
   }
 };

@@ -131,8 +131,8 @@ const bool g_init = (state(), true);
 inline const Kernels& active() { return *state().active.load(std::memory_order_relaxed); }
 
 /// Tails of at most this many elements run on the one-lane target: a SIMD target computes a tail
-/// as a whole block through padded copies of the inputs (measured on AVX-512 with SSE4 for the
-/// tail: a single-element normalize 42 ns, nlerp 98 ns; on SCALAR 17 and 18 ns), and one lane
+/// as a whole block through padded copies of the inputs (on AVX-512 with SSE4 for the tail, a
+/// single-element normalize or nlerp took several times as long as on SCALAR), and one lane
 /// computes each element alone, so from three elements on the narrowest SIMD block is cheaper.
 constexpr std::size_t kOneLaneTail = 2;
 
