@@ -82,11 +82,13 @@ std::vector<r::SkinningMethod> builtin_methods() { return r::skinning_methods(ro
 
 TEST(FrameJob, IsTheRenderCheckFrameSimple) {
   RC_CLAUSE("VIS-1");
+  RC_CLAUSE("REPORT-2");  // the frame's vertex loops (vertex_kernels.hpp)
   check_character(r::Complexity::simple, builtin_methods());
 }
 
 TEST(FrameJob, IsTheRenderCheckFrameMedium) {
   RC_CLAUSE("VIS-1");
+  RC_CLAUSE("REPORT-2");  // the frame's vertex loops (vertex_kernels.hpp)
   check_character(r::Complexity::medium, builtin_methods());
 }
 
@@ -95,6 +97,7 @@ TEST(FrameJob, IsTheRenderCheckFrameMedium) {
 // joints, weighted 0.7, 0.1, 0.1, 0.1 (so that DQS's |b_r| >= 0.4 whatever the signs).
 TEST(FrameJob, IsTheRenderCheckFrameWithFourInfluencesPerVertex) {
   RC_CLAUSE("VIS-1");
+  RC_CLAUSE("REPORT-2");  // the frame's vertex loops (vertex_kernels.hpp)
   check_character(r::Complexity::medium, builtin_methods(), [](r::Scene& scene) {
     const std::size_t n = scene.skeleton.joints.size();
     ASSERT_GE(n, 4u);
