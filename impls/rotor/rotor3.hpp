@@ -698,6 +698,21 @@ struct RotorOps {
     return ok;
   }
 
+  /// A blend's weights divided by the largest: on the stack up to 16 influences (the suite's
+  /// blends have at most 8), where a heap allocation per element cost more than the arithmetic.
+  class BlendWeights {
+   public:
+    explicit BlendWeights(std::size_t k) {
+      if (k > local_.size()) heap_.resize(k);
+    }
+    S* data() { return heap_.empty() ? local_.data() : heap_.data(); }
+    S& operator[](std::size_t i) { return data()[i]; }
+
+   private:
+    std::array<S, 16> local_;
+    std::vector<S> heap_;
+  };
+
   /// Blend rules (EDGE-9): sizes match, nonempty, every quaternion a rotation (even with
   /// weight 0), weights finite and >= 0 (-0 is 0), some weight > 0. Sets the pivot (first
   /// weight > 0) and the weights divided by the largest (the blends are scale-free in w).
@@ -720,7 +735,7 @@ struct RotorOps {
   /// QLB-1 in rotor coefficients: normalize(sum w_i s_i R_i), s_i = -1 iff <R_i ~R_p>_0 < 0.
   static Status blend_qlb(std::span<const Q> q, std::span<const S> w, Q& out) {
     std::size_t p = 0;
-    std::vector<S> ws(q.size());
+    BlendWeights ws(q.size());
     if (!influences(q, w, p, ws.data())) return bad;
     Rotor3<S> sum{0, 0, 0, 0};
     for (std::size_t i = 0; i < q.size(); ++i) {
@@ -734,7 +749,7 @@ struct RotorOps {
   /// LOGBLEND-1: R_p exp(sum (w_i/W) log(align(~R_p R_i))), align negates when the scalar < 0.
   static Status blend_log(std::span<const Q> q, std::span<const S> w, Q& out) {
     std::size_t p = 0;
-    std::vector<S> ws(q.size());
+    BlendWeights ws(q.size());
     if (!influences(q, w, p, ws.data())) return bad;
     S total = 0;
     for (std::size_t i = 0; i < q.size(); ++i) total += ws[i];
@@ -754,7 +769,7 @@ struct RotorOps {
   /// SKIN-1: sum (w_i/W) (M_i v + t_i) with M_i the matrix of the rotor of q_i.
   static Status skin_linear(std::span<const Q> q, std::span<const V> t, std::span<const S> w, const V& v, V& out) {
     std::size_t p = 0;
-    std::vector<S> ws(q.size());
+    BlendWeights ws(q.size());
     if (t.size() != q.size() || !all_finite(v) || !influences(q, w, p, ws.data())) return bad;
     for (const V& ti : t)
       if (!all_finite(ti)) return bad;

@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, AXANG-4 and NLERP-1 of RotorOps<S, Method2>
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, AXANG-4, NLERP-1 and QLB-1 of RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -225,6 +225,72 @@ struct NlerpLanes {
       out[1][l] = -(sum.e31 / ns);
       out[2][l] = -(sum.e12 / ns);
       out[3][l] = sum.s / ns;
+    }
+  }
+};
+
+/// QLB-1 as RotorOps::blend_qlb computes it with Method2 where every weight is in [0, max], some
+/// weight is > 0, every |q_i|^2 is ordinary, the filter decides each hemisphere sign against the
+/// pivot (the first weight > 0, EDGE-9) and the sum's |.|^2 is ordinary: normalized(sum_i
+/// (+-w_i/w_max) Phi(q_i/|q_i|)), summed from 0 in influence order, read back by Phi^-1.
+/// Data: element e's k quaternions at q + 4 k e, its k weights at w + k e (the ABI's arrays).
+template <class S, std::size_t L>
+struct BlendQlbLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(std::size_t k, const S* q, const S* w) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    // EDGE-9: the weights' range, the largest (influences()'s w_max) and the pivot.
+    S w_max[L], pivot[4][L], sum[4][L];  // sum: s, e23, e31, e12
+    Flag p[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = 1;
+      w_max[l] = 0;
+      p[l] = Flag(k);
+    }
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t l = 0; l < L; ++l) {
+        const S wi = w[k * l + i];
+        ok[l] = ok[l] & Flag((wi >= 0) & (wi <= kMax));
+        w_max[l] = wi > w_max[l] ? wi : w_max[l];
+        p[l] = ((p[l] == Flag(k)) & (wi > 0)) ? Flag(i) : p[l];
+      }
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = ok[l] & Flag(p[l] != Flag(k));
+      const std::size_t at = 4 * k * l + 4 * (p[l] == Flag(k) ? 0 : std::size_t(p[l]));
+      for (std::size_t c = 0; c < 4; ++c) pivot[c][l] = q[at + c];
+      for (std::size_t c = 0; c < 4; ++c) sum[c][l] = 0;
+    }
+    S x[4][L];
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l)
+        for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * k * l + 4 * i + c];
+      for (std::size_t l = 0; l < L; ++l) {
+        const S n2 = norm2_lane(x, l);
+        bool negative = false;  // hemisphere_sign(q_i, q_p) < 0, where decided (EDGE-3)
+        const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], pivot[0][l], pivot[1][l],
+                                                         pivot[2][l], pivot[3][l], negative);
+        const bool ordinary = runtime::is_ordinary_square_lane(n2);
+        ok[l] = ok[l] & Flag(ordinary & decided);
+        const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2));
+        const S f0 = w[k * l + i] / w_max[l];
+        const S f = negative ? -f0 : f0;
+        sum[0][l] = sum[0][l] + f * r.s;
+        sum[1][l] = sum[1][l] + f * r.e23;
+        sum[2][l] = sum[2][l] + f * r.e31;
+        sum[3][l] = sum[3][l] + f * r.e12;
+      }
+    }
+    // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
+    for (std::size_t l = 0; l < L; ++l) {
+      const S ns2 = sum[1][l] * sum[1][l] + sum[2][l] * sum[2][l] + sum[3][l] * sum[3][l] + sum[0][l] * sum[0][l];
+      ok[l] = ok[l] & Flag(runtime::is_ordinary_square_lane(ns2));
+      const S ns = std::sqrt(ns2);
+      out[0][l] = -(sum[1][l] / ns);
+      out[1][l] = -(sum[2][l] / ns);
+      out[2][l] = -(sum[3][l] / ns);
+      out[3][l] = sum[0][l] / ns;
     }
   }
 };

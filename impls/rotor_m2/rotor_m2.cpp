@@ -3,8 +3,8 @@
 // every operation in Cl(3,0) (impls/rotor/rotor3.hpp) and the quaternion read back by Phi^-1.
 // The same code as rotor_m1 except this conversion.
 //
-// normalize, compose, inverse, apply_vector, apply_bivector, to_matrix, to_axis and nlerp batches
-// run their ordinary elements in SIMD lanes (rotor/rotor_lanes.hpp: RotorOps' operations in
+// normalize, compose, inverse, apply_vector, apply_bivector, to_matrix, to_axis, nlerp and
+// blend_qlb batches run their ordinary elements in SIMD lanes (rotor/rotor_lanes.hpp: RotorOps' operations in
 // RotorOps' order, so the same bits) and every other element, and the last n mod 4, through
 // RotorOps, which scales only where it must.
 #include <cstddef>
@@ -31,6 +31,8 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
       "GA rotors, corrected Method 2: rotor = Phi(q) = w - x e23 - y e31 - z e12, ops in Cl(3,0)";
   static constexpr std::uint32_t levels = rotorcert::rotor::kRotorLevels;
   static constexpr const char* const* clauses = rotorcert::rotor::kRotorClauses;
+  /// The most influences a blend_qlb batch runs in SIMD lanes (the suite's blends have at most 8).
+  static constexpr std::size_t kLaneInfluences = 8;
 
   /// NORM-1, COMPOSE-1, APPLY-1 batches: lanes for ordinary |q|^2 (and finite v), RotorOps
   /// otherwise (runtime/lane_batch.hpp).
@@ -67,6 +69,20 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   ROTORCERT_TARGET_CLONES_FLAT static int nlerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out,
                                                      std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::NlerpLanes, &Base::nlerp, 4, 4>(n, a, b, t, out, status);
+  }
+  /// QLB-1 batches of at most kLaneInfluences influences: lanes where the weights, every influence
+  /// and the sum are ordinary and the filter decides every hemisphere sign; every other element,
+  /// the last n mod 4 and any batch of more influences through RotorOps.
+  ROTORCERT_TARGET_CLONES_FLAT static int blend_qlb_batch(std::size_t n, std::size_t k, const S* q, const S* w, S* out,
+                                                         std::uint8_t* status) {
+    const auto checked = [&](std::size_t e) {
+      rotorcert::impl::detail::blend<&Base::blend_qlb, S, 4, 4>(1, k, q + 4 * k * e, w + k * e, out + 4 * e, status + e);
+    };
+    if (k == 0 || k > kLaneInfluences) return rotorcert::impl::detail::blend<&Base::blend_qlb, S, 4, 4>(n, k, q, w, out, status);
+    runtime::in_lanes_or_checked<lanes::BlendQlbLanes>(
+        n, q, 4 * k, w, k, [k](auto& l, const S* qq, const S* ww) { l.run(k, qq, ww); },
+        runtime::copy_lane_outputs<4>(out, status), checked, checked);
+    return 0;
   }
 };
 

@@ -84,6 +84,8 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("EDGE-5");
   RC_CLAUSE("EDGE-8");
   RC_CLAUSE("AXANG-4");
+  RC_CLAUSE("QLB-1");
+  RC_CLAUSE("EDGE-9");
   const rc_impl* f = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 0);
   const rc_impl* d = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 1);
   ASSERT_TRUE(f != nullptr && d != nullptr && f->f32_v3 != nullptr && d->f64_v3 != nullptr);

@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, NLERP-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, NLERP-1, QLB-1 and (ops3)
 /// AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -86,6 +86,42 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
     check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
     });
+  // QLB-1 with k = 1, 4 and 8 influences per element (EDGE-9's rules on the weights): ordinary
+  // influences, and in every other element one special, so that lanes of one block take
+  // different paths: an influence that is -q_0 (the flip) or orthogonal to q_0 exactly (EDGE-3's
+  // tie against the pivot), scaled by 2^E, zero, subnormal or NaN; a first weight 0 (the pivot
+  // moves), all weights 0, a weight -0, -1/2, NaN, +Inf or 1e30.
+  if (ops.blend_qlb != nullptr)
+    for (const std::size_t k : {std::size_t{1}, std::size_t{4}, std::size_t{8}}) {
+      std::vector<S> qs(4 * k * kCases), ws(k * kCases);
+      for (std::size_t i = 0; i < kCases; ++i) {
+        S* q = &qs[4 * k * i];
+        S* w = &ws[k * i];
+        for (std::size_t j = 0; j < k; ++j) {
+          for (std::size_t c = 0; c < 4; ++c) q[4 * j + c] = S(unit(gen) * size(gen));
+          w[j] = S(std::abs(unit(gen)));
+        }
+        const std::size_t last = k - 1;
+        switch (i % 26) {
+          case 1: for (std::size_t c = 0; c < 4; ++c) q[4 * last + c] = -q[c]; break;
+          case 2: if (k > 1) q[4 * last] = -q[1], q[4 * last + 1] = q[0], q[4 * last + 2] = -q[3], q[4 * last + 3] = q[2]; break;
+          case 3: for (std::size_t c = 0; c < 4; ++c) q[4 * last + c] = std::ldexp(q[4 * last + c], E); break;
+          case 4: for (std::size_t c = 0; c < 4; ++c) q[4 * last + c] = 0; break;
+          case 5: q[4 * last] = std::numeric_limits<S>::denorm_min(), q[4 * last + 1] = q[4 * last + 2] = q[4 * last + 3] = 0; break;
+          case 6: q[4 * last + 2] = std::numeric_limits<S>::quiet_NaN(); break;
+          case 7: w[0] = 0; break;
+          case 8: for (std::size_t j = 0; j < k; ++j) w[j] = 0; break;
+          case 9: w[last] = S(-0.0); break;
+          case 10: w[last] = S(-0.5); break;
+          case 11: w[last] = std::numeric_limits<S>::quiet_NaN(); break;
+          case 12: w[last] = std::numeric_limits<S>::infinity(); break;
+          case 13: w[last] = S(1e30); break;
+          default: break;
+        }
+      }
+      check(k == 1 ? "blend_qlb k=1" : k == 4 ? "blend_qlb k=4" : "blend_qlb k=8", 4,
+            [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.blend_qlb(n, k, &qs[4 * k * i], &ws[k * i], o, s); });
+    }
 }
 
 }  // namespace rotorcert::testing::quat_batch_laws
