@@ -207,13 +207,14 @@ struct NlerpLanes {
       const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
       const S sa = std::sqrt(na), sb = std::sqrt(nb);
       // R_B' = +-Phi(b/|b|): the flip as a multiplication by -1 (exact, = negated()), so that no
-      // branch depends on the lane.
-      const S sign = S(1) - S(2) * S(negative);
+      // branch depends on the lane; a select, since GCC 12 does not vectorise bool -> float.
+      const S sign = negative ? S(-1) : S(1);
       const Rotor3<S> ra = unit_rotor_lane(x, l, sa), r = unit_rotor_lane(y, l, sb);
       const Rotor3<S> rb{sign * r.s, sign * r.e23, sign * r.e31, sign * r.e12};
-      // fmax, not std::max: GCC 12 leaves the select of std::max as a branch and the loop
-      // scalar; both give max(1, |t|) for every t (1 for NaN, where the lane is not ok anyway).
-      const S k = S(1) / std::fmax(S(1), std::abs(tt[l])), u = tt[l] * k;
+      // max(1, |t|) as a select, as std::max gives it for every t (1 for NaN, where the lane is
+      // not ok anyway): GCC 12 leaves std::max a branch, and vectorises fmax only without NaNs.
+      const S at = std::abs(tt[l]);
+      const S k = S(1) / (at > S(1) ? at : S(1)), u = tt[l] * k;
       const Rotor3<S> sum{k * ra.s + u * (rb.s - ra.s), k * ra.e23 + u * (rb.e23 - ra.e23),
                           k * ra.e31 + u * (rb.e31 - ra.e31), k * ra.e12 + u * (rb.e12 - ra.e12)};
       // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
