@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, AXANG-4, NLERP-1 and QLB-1 of RotorOps<S, Method2>
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-4, NLERP-1 and QLB-1 of RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
@@ -292,6 +293,93 @@ struct BlendQlbLanes {
       out[1][l] = -(sum[2][l] / ns);
       out[2][l] = -(sum[3][l] / ns);
       out[3][l] = sum[0][l] / ns;
+    }
+  }
+};
+
+/// MAT-2 as RotorOps::from_matrix computes it with Method2 where rotor_from_matrix takes its fast
+/// path (rotor_from_near_orthonormal_matrix: entries at most 2, det > 1/2, ||M^T M - I||_F at
+/// most 8 eps of the input format; binary32 in binary64) and every normalisation's |.|^2 is
+/// ordinary: Shepperd's quaternion with the largest pivot, normalised; for binary32 rounded to
+/// binary32 and normalised again; then Phi^-1(Method2::in(.)) normalises once more and
+/// canonical_sign() picks MAT-2's sign. Shepperd's four cases become selects: the pivot's radicand
+/// in its case's order of additions, the three other components from the six sums and differences
+/// of off-diagonal pairs, each multiplied by f = 1/(4 v) after the select, as in the case itself.
+/// Data: element e's column-major matrix at m + 9 e.
+template <class S, std::size_t L>
+struct FromMatrixLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* m, const S* /*unused*/) {
+    // The format rotor_from_matrix works in, and its fast path's tolerance (8 eps of S).
+    using W = std::conditional_t<std::is_same_v<S, float>, double, S>;
+    constexpr W kTolerance = W(8) * W(std::numeric_limits<S>::epsilon());
+    W x[9][L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 9; ++c) x[c][l] = W(m[9 * l + c]);
+    for (std::size_t l = 0; l < L; ++l) {
+      // at(r, c) = x[3 c + r]
+      const W m00 = x[0][l], m10 = x[1][l], m20 = x[2][l], m01 = x[3][l], m11 = x[4][l], m21 = x[5][l];
+      const W m02 = x[6][l], m12 = x[7][l], m22 = x[8][l];
+      // Written out term by term: GCC 12 vectorises no loop nest with inner loops here.
+      const auto bounded = [](W e) { return std::abs(e) <= W(2); };  // false for NaN
+      bool good = bounded(m00) & bounded(m10) & bounded(m20) & bounded(m01) & bounded(m11) & bounded(m21) &
+                  bounded(m02) & bounded(m12) & bounded(m22);
+      const W det = m00 * (m11 * m22 - m12 * m21) - m01 * (m10 * m22 - m12 * m20) + m02 * (m10 * m21 - m11 * m20);
+      good = good & (det > W(0.5));
+      // orthonormality_defect2: g_ij = -[i = j] + sum_k at(k, i) at(k, j), g_ij^2 summed row by row.
+      const auto g2 = [](W init, W a0, W a1, W a2, W b0, W b1, W b2) {
+        const W g = init + a0 * b0 + a1 * b1 + a2 * b2;
+        return g * g;
+      };
+      const W defect = W(0) + g2(W(-1), m00, m10, m20, m00, m10, m20) + g2(W(0), m00, m10, m20, m01, m11, m21) +
+                       g2(W(0), m00, m10, m20, m02, m12, m22) + g2(W(0), m01, m11, m21, m00, m10, m20) +
+                       g2(W(-1), m01, m11, m21, m01, m11, m21) + g2(W(0), m01, m11, m21, m02, m12, m22) +
+                       g2(W(0), m02, m12, m22, m00, m10, m20) + g2(W(0), m02, m12, m22, m01, m11, m21) +
+                       g2(W(-1), m02, m12, m22, m02, m12, m22);
+      good = good & (defect <= kTolerance * kTolerance);
+      // shepperd_rotor: the case, then its radicand and components (q = [x, y, z, w]).
+      const W trace = m00 + m11 + m22;
+      const bool c0 = (trace >= m00) & (trace >= m11) & (trace >= m22);
+      const bool c1 = !c0 & (m00 >= m11) & (m00 >= m22);
+      const bool c2 = !c0 & !c1 & (m11 >= m22);
+      const W r0 = W(1) + trace, r1 = W(1) + m00 - m11 - m22, r2 = W(1) - m00 + m11 - m22;
+      const W r3 = W(1) - m00 - m11 + m22;
+      const W radicand = c0 ? r0 : c1 ? r1 : c2 ? r2 : r3;
+      const W v = W(0.5) * std::sqrt(radicand), f = W(0.25) / v;
+      const W dx = m21 - m12, dy = m02 - m20, dz = m10 - m01, sxy = m01 + m10, sxz = m02 + m20, syz = m12 + m21;
+      const W qx = c0 ? dx * f : c1 ? v : c2 ? sxy * f : sxz * f;
+      const W qy = c0 ? dy * f : c1 ? sxy * f : c2 ? v : syz * f;
+      const W qz = c0 ? dz * f : c1 ? sxz * f : c2 ? syz * f : v;
+      const W qw = c0 ? v : c1 ? dx * f : c2 ? dy * f : dz * f;
+      // normalized(q) on an ordinary |q|^2 (then q is finite and nonzero: is_rotation holds).
+      const W qn2 = qx * qx + qy * qy + qz * qz + qw * qw;
+      good = good & runtime::is_ordinary_square_lane(qn2);
+      const W qn = std::sqrt(qn2);
+      // The rotor {w, -x, -y, -z}/|q|; binary32 rounds it and normalises {e23, e31, e12, s} again.
+      S a0, a1, a2, a3;  // PhiReadout::out of rotor_from_matrix's rotor: [x, y, z, w]
+      if constexpr (std::is_same_v<S, float>) {
+        const float e23 = float(-(qx / qn)), e31 = float(-(qy / qn)), e12 = float(-(qz / qn)), s = float(qw / qn);
+        const float n2 = e23 * e23 + e31 * e31 + e12 * e12 + s * s;
+        good = good & runtime::is_ordinary_square_lane(n2);
+        const float n = std::sqrt(n2);
+        a0 = -(e23 / n), a1 = -(e31 / n), a2 = -(e12 / n), a3 = s / n;
+      } else {
+        a0 = -(-(qx / qn)), a1 = -(-(qy / qn)), a2 = -(-(qz / qn)), a3 = qw / qn;
+      }
+      // Phi^-1(Method2::in(a)) = normalized(a), then MAT-2's sign (canonical_sign).
+      const S an2 = a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3;
+      good = good & runtime::is_ordinary_square_lane(an2);
+      const S an = std::sqrt(an2);
+      const S o0 = a0 / an, o1 = a1 / an, o2 = a2 / an, o3 = a3 / an;
+      const S first = o0 != 0 ? o0 : (o1 != 0 ? o1 : o2);
+      const bool flip = (o3 < 0) | ((o3 == 0) & (first < 0));
+      out[0][l] = flip ? -o0 : o0;
+      out[1][l] = flip ? -o1 : o1;
+      out[2][l] = flip ? -o2 : o2;
+      out[3][l] = flip ? -o3 : o3;
+      ok[l] = Flag(good);
     }
   }
 };

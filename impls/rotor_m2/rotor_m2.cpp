@@ -61,6 +61,10 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   ROTORCERT_TARGET_CLONES_FLAT static int to_matrix_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::ToMatrixLanes, &Base::to_matrix, 4, 9>(n, q, out, status);
   }
+  /// MAT-2 batches: lanes where MAT-3's fast path applies (a rotation rounded to the format).
+  ROTORCERT_TARGET_CLONES_FLAT static int from_matrix_batch(std::size_t n, const S* m, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::FromMatrixLanes, &Base::from_matrix, 9, 4>(n, m, out, status);
+  }
   /// AXANG-4 batches (ABI version 3).
   ROTORCERT_TARGET_CLONES_FLAT static int to_axis_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::ToAxisLanes, &Base::to_axis, 4, 3>(n, q, out, status);

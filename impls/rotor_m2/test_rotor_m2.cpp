@@ -86,6 +86,8 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("AXANG-4");
   RC_CLAUSE("QLB-1");
   RC_CLAUSE("EDGE-9");
+  RC_CLAUSE("MAT-2");
+  RC_CLAUSE("MAT-3");
   const rc_impl* f = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 0);
   const rc_impl* d = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 1);
   ASSERT_TRUE(f != nullptr && d != nullptr && f->f32_v3 != nullptr && d->f64_v3 != nullptr);

@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, NLERP-1, QLB-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, NLERP-1, QLB-1 and (ops3)
 /// AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -86,6 +86,37 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
     check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
     });
+  // MAT-2 and MAT-3: the rotation matrices of the quaternions a (those that are rotations) rounded
+  // to the format, so that most take MAT-3's fast path, and among them, spread over lanes: a
+  // reflection (-M), 3/2 M (outside the fast path's bounds), M with one entry off by 2^-10 (not
+  // orthonormal), a half turn about (1, -1, 0) (w = 0: MAT-2's sign rule on x), NaN and Inf, and
+  // the identity.
+  if (ops.from_matrix != nullptr) {
+    std::vector<S> m(9 * kCases);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      double q[4];
+      for (std::size_t c = 0; c < 4; ++c) q[c] = double(a[4 * i + c]);
+      double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+      if (!(n > 1e-30 && n < 1e30)) q[0] = q[1] = q[2] = 0, q[3] = n = 1;  // not a rotation: the identity
+      const double x = q[0] / n, y = q[1] / n, z = q[2] / n, w = q[3] / n;
+      const double r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y),
+                           2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x),
+                           2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)};
+      S* e = &m[9 * i];
+      for (std::size_t c = 0; c < 9; ++c) e[c] = S(r[c]);
+      switch (i % 13) {
+        case 1: for (std::size_t c = 0; c < 9; ++c) e[c] = -e[c]; break;
+        case 3: for (std::size_t c = 0; c < 9; ++c) e[c] = S(1.5) * e[c]; break;
+        case 5: e[4] = e[4] + S(1.0 / 1024); break;
+        case 7: { const S h[9] = {0, -1, 0, -1, 0, 0, 0, 0, -1}; for (std::size_t c = 0; c < 9; ++c) e[c] = h[c]; } break;
+        case 9: e[2] = std::numeric_limits<S>::quiet_NaN(); break;
+        case 10: e[6] = std::numeric_limits<S>::infinity(); break;
+        case 11: { const S id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; for (std::size_t c = 0; c < 9; ++c) e[c] = id[c]; } break;
+        default: break;
+      }
+    }
+    check("from_matrix", 4, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.from_matrix(n, &m[9 * i], o, s); });
+  }
   // QLB-1 with k = 1, 4 and 8 influences per element (EDGE-9's rules on the weights): ordinary
   // influences, and in every other element one special, so that lanes of one block take
   // different paths: an influence that is -q_0 (the flip) or orthogonal to q_0 exactly (EDGE-3's
