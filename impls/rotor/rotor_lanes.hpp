@@ -1,4 +1,5 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-4, NLERP-1 and QLB-1 of RotorOps<S, Method2>
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-4, NLERP-1, SLERP-2 and QLB-1 of
+// RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -380,6 +381,81 @@ struct FromMatrixLanes {
       out[2][l] = flip ? -o2 : o2;
       out[3][l] = flip ? -o3 : o3;
       ok[l] = Flag(good);
+    }
+  }
+};
+
+/// SLERP-2 as RotorOps::slerp computes it with Method2 (interpolate(): exp(t log(R_B' ~R_A)) R_A)
+/// where |a|^2 and |b|^2 are ordinary, t is finite, the filter decides the hemisphere sign, and
+/// the squared norms of log's bivector B and of exp's argument t log(.) are ordinary (so neither
+/// is zero). Both branches of log (its series for |B| << s, and atan2(|B|, s) B/|B|) and of exp's
+/// sin|b|/|b| (its series for |b|^2 < eps) are computed and selected. atan2, sin and cos are the
+/// element function's libm calls, made one lane at a time between the vectorised loops.
+template <class S, std::size_t L>
+struct SlerpLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* a, const S* b, const S* t) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    S x[4][L], y[4][L], tt[L];
+    load_lanes(a, x);
+    load_lanes(b, y);
+    for (std::size_t l = 0; l < L; ++l) tt[l] = t[l];
+    // R_A, and log(D) of D = +-R_B ~R_A up to its angle: |B|, s, the series' log and B/|B|.
+    S ra[4][L], n[L], s[L], series[3][L], unit[3][L];
+    Flag use_series[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S na = norm2_lane(x, l), nb = norm2_lane(y, l);
+      bool negative = false;
+      const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], y[0][l], y[1][l], y[2][l],
+                                                       y[3][l], negative);
+      const bool finite_t = (tt[l] <= kMax) & (tt[l] >= -kMax);
+      const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
+      const Rotor3<S> rra = unit_rotor_lane(x, l, std::sqrt(na)), rrb = unit_rotor_lane(y, l, std::sqrt(nb));
+      const Rotor3<S> d0 = gp(rrb, reverse(rra));
+      const S sign = negative ? S(-1) : S(1);  // negated(): exact
+      const Rotor3<S> d{sign * d0.s, sign * d0.e23, sign * d0.e31, sign * d0.e12};
+      const S n2 = d.e23 * d.e23 + d.e31 * d.e31 + d.e12 * d.e12;  // norm3 and unit_vector
+      ok[l] = Flag(ordinary_a & ordinary_b & decided & finite_t & runtime::is_ordinary_square_lane(n2));
+      const S nd = std::sqrt(n2);
+      const S q = nd / d.s, q2 = q * q;
+      use_series[l] = Flag((d.s > 0) & (q2 * q2 * q2 < kEps<S>));
+      const S f = (S(1) - q2 / S(3) + q2 * q2 / S(5)) / d.s;
+      series[0][l] = f * d.e23, series[1][l] = f * d.e31, series[2][l] = f * d.e12;
+      unit[0][l] = d.e23 / nd, unit[1][l] = d.e31 / nd, unit[2][l] = d.e12 / nd;
+      n[l] = nd, s[l] = d.s;
+      ra[0][l] = rra.s, ra[1][l] = rra.e23, ra[2][l] = rra.e31, ra[3][l] = rra.e12;
+    }
+    S angle[L];
+    for (std::size_t l = 0; l < L; ++l) angle[l] = atan2_in_binary64(n[l], s[l]);
+    // exp(t log D) up to sin and cos: b = t log D, |b|, and sin|b|/|b|'s series.
+    S e[3][L], m[L], sinc_series[L];
+    Flag small[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      const bool by_series = use_series[l] != 0;
+      const S l0 = by_series ? series[0][l] : angle[l] * unit[0][l];
+      const S l1 = by_series ? series[1][l] : angle[l] * unit[1][l];
+      const S l2 = by_series ? series[2][l] : angle[l] * unit[2][l];
+      const S b0 = tt[l] * l0, b1 = tt[l] * l1, b2 = tt[l] * l2;
+      const S m2 = b0 * b0 + b1 * b1 + b2 * b2;
+      ok[l] = ok[l] & Flag(runtime::is_ordinary_square_lane(m2));
+      const S mm = std::sqrt(m2);
+      small[l] = Flag(mm * mm < kEps<S>);
+      sinc_series[l] = S(1) - mm * mm / S(6);
+      e[0][l] = b0, e[1][l] = b1, e[2][l] = b2, m[l] = mm;
+    }
+    S sn[L], cs[L];
+    for (std::size_t l = 0; l < L; ++l) sn[l] = std::sin(m[l]), cs[l] = std::cos(m[l]);
+    // exp(b) R_A, read back by Phi^-1.
+    for (std::size_t l = 0; l < L; ++l) {
+      const S sinc = small[l] != 0 ? sinc_series[l] : sn[l] / m[l];
+      const Rotor3<S> ex{cs[l], sinc * e[0][l], sinc * e[1][l], sinc * e[2][l]};
+      const Rotor3<S> r = gp(ex, Rotor3<S>{ra[0][l], ra[1][l], ra[2][l], ra[3][l]});
+      out[0][l] = -r.e23;
+      out[1][l] = -r.e31;
+      out[2][l] = -r.e12;
+      out[3][l] = r.s;
     }
   }
 };

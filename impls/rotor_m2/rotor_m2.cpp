@@ -74,6 +74,11 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
                                                      std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::NlerpLanes, &Base::nlerp, 4, 4>(n, a, b, t, out, status);
   }
+  /// SLERP-2 batches: lanes where the inputs, log's bivector and exp's argument are ordinary.
+  ROTORCERT_TARGET_CLONES_FLAT static int slerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out,
+                                                     std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::SlerpLanes, &Base::slerp, 4, 4>(n, a, b, t, out, status);
+  }
   /// QLB-1 batches of at most kLaneInfluences influences: lanes where the weights, every influence
   /// and the sum are ordinary and the filter decides every hemisphere sign; every other element,
   /// the last n mod 4 and any batch of more influences through RotorOps.

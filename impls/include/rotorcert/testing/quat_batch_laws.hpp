@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, NLERP-1, QLB-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, NLERP-1, SLERP-2, QLB-1 and (ops3)
 /// AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -86,6 +86,18 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
     check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
     });
+  // SLERP-2 on the pairs above, and on pairs b = a (1 + 1e-3 d) close enough for log's series
+  // (and with t = 1e-6 for exp's too) in every third element.
+  if (ops.slerp != nullptr) {
+    std::vector<S> bs(b), ts(t);
+    for (std::size_t i = 1; i < kCases; i += 3) {
+      for (std::size_t c = 0; c < 4; ++c) bs[4 * i + c] = a[4 * i + c] * S(1 + 1e-3 * unit(gen));
+      if (i % 2 == 0) ts[i] = S(1e-6);
+    }
+    check("slerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
+      return ops.slerp(n, &a[4 * i], &bs[4 * i], &ts[i], o, s);
+    });
+  }
   // MAT-2 and MAT-3: the rotation matrices of the quaternions a (those that are rotations) rounded
   // to the format, so that most take MAT-3's fast path, and among them, spread over lanes: a
   // reflection (-M), 3/2 M (outside the fast path's bounds), M with one entry off by 2^-10 (not
