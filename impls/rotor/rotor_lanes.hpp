@@ -1,5 +1,5 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-4, NLERP-1, SLERP-2 and QLB-1 of
-// RotorOps<S, Method2>
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-2, AXANG-3, AXANG-4, LOG-1, EXP-1,
+// NLERP-1, SLERP-2 and QLB-1 of RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -456,6 +456,137 @@ struct SlerpLanes {
       out[1][l] = -r.e31;
       out[2][l] = -r.e12;
       out[3][l] = r.s;
+    }
+  }
+};
+
+/// LOG-1 as RotorOps::log computes it with Method2 where |q|^2 and |B|^2 of R = s + B = Phi(q/|q|)
+/// are ordinary (so B is not zero) and, for s < 0, |v|^2 of q's vector part v too: rotor::log(R)
+/// for s >= 0, its series for |B| << s or atan2(|B|, s) B/|B|, both computed and selected; for
+/// s < 0 atan2(|B|, s) times plane_of(q) = -v/|v|. Read back by pure_out (a negation). atan2 is
+/// the element function's call, one lane at a time.
+template <class S, std::size_t L>
+struct LogLanes {
+  S out[3][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L], n[L], s[L], series[3][L], dir[3][L];
+    Flag use_series[L];
+    load_lanes(q, x);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2q = norm2_lane(x, l);
+      const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2q));
+      const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12;  // norm3 and unit_vector
+      const S v2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l];  // plane_of's |v|^2
+      const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
+      const bool ordinary_v = runtime::is_ordinary_square_lane(v2);
+      ok[l] = Flag(ordinary_q & ordinary_b & ((r.s >= 0) | ordinary_v));
+      const S nb = std::sqrt(n2), nv = std::sqrt(v2);
+      const S ratio = nb / r.s, ratio2 = ratio * ratio;
+      use_series[l] = Flag((r.s > 0) & (ratio2 * ratio2 * ratio2 < kEps<S>));
+      const S f = (S(1) - ratio2 / S(3) + ratio2 * ratio2 / S(5)) / r.s;
+      series[0][l] = f * r.e23, series[1][l] = f * r.e31, series[2][l] = f * r.e12;
+      const bool own_plane = r.s >= 0;
+      dir[0][l] = own_plane ? r.e23 / nb : -(x[0][l] / nv);
+      dir[1][l] = own_plane ? r.e31 / nb : -(x[1][l] / nv);
+      dir[2][l] = own_plane ? r.e12 / nb : -(x[2][l] / nv);
+      n[l] = nb, s[l] = r.s;
+    }
+    S angle[L];
+    for (std::size_t l = 0; l < L; ++l) angle[l] = atan2_in_binary64(n[l], s[l]);
+    for (std::size_t l = 0; l < L; ++l) {
+      const bool by_series = use_series[l] != 0;
+      out[0][l] = -(by_series ? series[0][l] : angle[l] * dir[0][l]);
+      out[1][l] = -(by_series ? series[1][l] : angle[l] * dir[1][l]);
+      out[2][l] = -(by_series ? series[2][l] : angle[l] * dir[2][l]);
+    }
+  }
+};
+
+/// EXP-1 as RotorOps::exp computes it with Method2 where |v|^2 is ordinary (v finite, not zero):
+/// rotor::exp(b) of b = pure_in(v) = -v, cos|b| + b sin|b|/|b| (the series 1 - |b|^2/6 where
+/// |b|^2 < eps, selected), read back by Phi^-1. sin and cos are the element function's calls, one
+/// lane at a time.
+template <class S, std::size_t L>
+struct ExpLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* v, const S* /*unused*/) {
+    S b[3][L], n[L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 3; ++c) b[c][l] = -v[3 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2 = b[0][l] * b[0][l] + b[1][l] * b[1][l] + b[2][l] * b[2][l];
+      ok[l] = Flag(runtime::is_ordinary_square_lane(n2));
+      n[l] = std::sqrt(n2);
+    }
+    S sn[L], cs[L];
+    for (std::size_t l = 0; l < L; ++l) sn[l] = std::sin(n[l]), cs[l] = std::cos(n[l]);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S sinc = n[l] * n[l] < kEps<S> ? S(1) - n[l] * n[l] / S(6) : sn[l] / n[l];
+      out[0][l] = -(sinc * b[0][l]);
+      out[1][l] = -(sinc * b[1][l]);
+      out[2][l] = -(sinc * b[2][l]);
+      out[3][l] = cs[l];
+    }
+  }
+};
+
+/// AXANG-3 as RotorOps::to_angle computes it with Method2 where |q|^2 is ordinary and |B|^2 of
+/// R = s + B = Phi(q/|q|) is ordinary or B is exactly zero (norm3's own cases without scaling):
+/// 2 atan2(|B|, s), atan2 the element function's call, one lane at a time.
+template <class S, std::size_t L>
+struct ToAngleLanes {
+  S out[1][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L], n[L], s[L];
+    load_lanes(q, x);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2q = norm2_lane(x, l);
+      const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2q));
+      const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12;
+      const bool no_plane = (r.e23 == 0) & (r.e31 == 0) & (r.e12 == 0);  // norm3 returns +0
+      const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
+      ok[l] = Flag(ordinary_q & (ordinary_b | no_plane));
+      n[l] = std::sqrt(n2), s[l] = r.s;
+    }
+    for (std::size_t l = 0; l < L; ++l) out[0][l] = S(2) * atan2_in_binary64(n[l], s[l]);
+  }
+};
+
+/// AXANG-2 as RotorOps::from_axis_angle computes it with Method2 where the angle is finite and
+/// |axis|^2 ordinary: u = axis/|axis|, h = angle/2, Phi^-1(cos h - sin h (u_x e23 + u_y e31 +
+/// u_z e12)) = (sin h u, cos h) with the rotor's two negations. cos and sin are the element
+/// function's calls, one lane at a time.
+template <class S, std::size_t L>
+struct FromAxisAngleLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* angle, const S* axis) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    S u[3][L], h[L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 3; ++c) u[c][l] = axis[3 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S a = angle[l];
+      const S n2 = u[0][l] * u[0][l] + u[1][l] * u[1][l] + u[2][l] * u[2][l];
+      ok[l] = Flag(runtime::is_ordinary_square_lane(n2) & (a <= kMax) & (a >= -kMax));
+      const S n = std::sqrt(n2);
+      u[0][l] = u[0][l] / n, u[1][l] = u[1][l] / n, u[2][l] = u[2][l] / n;
+      h[l] = a / S(2);
+    }
+    S cs[L], sn[L];
+    for (std::size_t l = 0; l < L; ++l) cs[l] = std::cos(h[l]), sn[l] = std::sin(h[l]);
+    for (std::size_t l = 0; l < L; ++l) {
+      out[0][l] = -(-sn[l] * u[0][l]);
+      out[1][l] = -(-sn[l] * u[1][l]);
+      out[2][l] = -(-sn[l] * u[2][l]);
+      out[3][l] = cs[l];
     }
   }
 };

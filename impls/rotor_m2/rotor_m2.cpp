@@ -74,6 +74,25 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
                                                      std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::NlerpLanes, &Base::nlerp, 4, 4>(n, a, b, t, out, status);
   }
+  /// AXANG-2 batches: lanes for a finite angle and an axis of ordinary |axis|^2.
+  ROTORCERT_TARGET_CLONES_FLAT static int from_axis_angle_batch(std::size_t n, const S* angle, const S* axis, S* out,
+                                                               std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::FromAxisAngleLanes, &Base::from_axis_angle, 1, 3, 4>(n, angle, axis, out,
+                                                                                                  status);
+  }
+  /// AXANG-3 batches (ABI version 3).
+  ROTORCERT_TARGET_CLONES_FLAT static int to_angle_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::ToAngleLanes, &Base::to_angle, 4, 1>(n, q, out, status);
+  }
+  /// LOG-1 batches: lanes where |q|^2 and the rotor's |B|^2 (and, past a half turn, |v|^2) are
+  /// ordinary.
+  ROTORCERT_TARGET_CLONES_FLAT static int log_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::LogLanes, &Base::log, 4, 3>(n, q, out, status);
+  }
+  /// EXP-1 batches: lanes where |v|^2 is ordinary.
+  ROTORCERT_TARGET_CLONES_FLAT static int exp_batch(std::size_t n, const S* v, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::ExpLanes, &Base::exp, 3, 4>(n, v, out, status);
+  }
   /// SLERP-2 batches: lanes where the inputs, log's bivector and exp's argument are ordinary.
   ROTORCERT_TARGET_CLONES_FLAT static int slerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out,
                                                      std::uint8_t* status) {

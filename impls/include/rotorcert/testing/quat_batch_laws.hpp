@@ -18,8 +18,8 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, NLERP-1, SLERP-2, QLB-1 and (ops3)
-/// AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1 and (ops3)
+/// AXANG-3, AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
 /// elements: 3 blocks of 16, 3 of 4 and one alone; among ordinary quaternions of sizes 1/4 .. 4
@@ -86,6 +86,34 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
     check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
     });
+  // LOG-1 and AXANG-3 on the quaternions above, on near-identities (w = 2^10 |v|: log's series)
+  // and on rotations so near the identity that the rotor's |B|^2 underflows; EXP-1 on the vectors above and on tiny ones (|v|^2 < eps: exp's
+  // series) in every fifth; AXANG-2 on the vectors as axes with angles 7 t (NaN and 7e30
+  // among them) and a zero axis in every seventh.
+  {
+    std::vector<S> qs(a), vs(v), angles(kCases), axes(v);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      if (i % 5 == 4) qs[4 * i + 3] = std::ldexp(std::abs(qs[4 * i]) + std::abs(qs[4 * i + 1]) + std::abs(qs[4 * i + 2]), 10);
+      if (i % 5 == 2) {  // |q|^2 ordinary, the rotor's |B|^2 underflows: norm3 must scale
+        for (std::size_t c = 0; c < 3; ++c) qs[4 * i + c] = std::ldexp(qs[4 * i + c], std::is_same_v<S, float> ? -43 : -281);
+        qs[4 * i + 3] = std::ldexp(qs[4 * i + 3], std::is_same_v<S, float> ? 32 : 256);
+      }
+      if (i % 5 == 3)
+        for (std::size_t c = 0; c < 3; ++c) vs[3 * i + c] = std::ldexp(vs[3 * i + c], -40);
+      angles[i] = S(7) * t[i];
+      if (i % 7 == 5) axes[3 * i] = axes[3 * i + 1] = axes[3 * i + 2] = 0;
+    }
+    if (ops.log != nullptr)
+      check("log", 3, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.log(n, &qs[4 * i], o, s); });
+    if (ops3 != nullptr && ops3->to_angle != nullptr)
+      check("to_angle", 1, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops3->to_angle(n, &qs[4 * i], o, s); });
+    if (ops.exp != nullptr)
+      check("exp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.exp(n, &vs[3 * i], o, s); });
+    if (ops.from_axis_angle != nullptr)
+      check("from_axis_angle", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
+        return ops.from_axis_angle(n, &angles[i], &axes[3 * i], o, s);
+      });
+  }
   // SLERP-2 on the pairs above, and on pairs b = a (1 + 1e-3 d) close enough for log's series
   // (and with t = 1e-6 for exp's too) in every third element.
   if (ops.slerp != nullptr) {
