@@ -1,5 +1,5 @@
 // NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-2, AXANG-3, AXANG-4, LOG-1, EXP-1,
-// NLERP-1, SLERP-2 and QLB-1 of RotorOps<S, Method2>
+// NLERP-1, SLERP-2, QLB-1 and SKIN-1 of RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
 // SoA jobs (and of dq/dlb_lanes.hpp, whose driver runtime/lane_blocks.hpp runs these too).
@@ -23,6 +23,7 @@
 #include <type_traits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_weights.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
 #include "rotor3.hpp"
@@ -243,25 +244,12 @@ struct BlendQlbLanes {
   Flag ok[L];
 
   void run(std::size_t k, const S* q, const S* w) {
-    constexpr S kMax = std::numeric_limits<S>::max();
-    // EDGE-9: the weights' range, the largest (influences()'s w_max) and the pivot.
-    S w_max[L], pivot[4][L], sum[4][L];  // sum: s, e23, e31, e12
-    Flag p[L];
+    runtime::LaneWeights<S, L> weights;
+    weights.scan(k, w);
+    S pivot[4][L], sum[4][L];  // sum: s, e23, e31, e12
     for (std::size_t l = 0; l < L; ++l) {
-      ok[l] = 1;
-      w_max[l] = 0;
-      p[l] = Flag(k);
-    }
-    for (std::size_t i = 0; i < k; ++i)
-      for (std::size_t l = 0; l < L; ++l) {
-        const S wi = w[k * l + i];
-        ok[l] = ok[l] & Flag((wi >= 0) & (wi <= kMax));
-        w_max[l] = wi > w_max[l] ? wi : w_max[l];
-        p[l] = ((p[l] == Flag(k)) & (wi > 0)) ? Flag(i) : p[l];
-      }
-    for (std::size_t l = 0; l < L; ++l) {
-      ok[l] = ok[l] & Flag(p[l] != Flag(k));
-      const std::size_t at = 4 * k * l + 4 * (p[l] == Flag(k) ? 0 : std::size_t(p[l]));
+      ok[l] = weights.ok[l];
+      const std::size_t at = weights.pivot_offset(k, 4, l);
       for (std::size_t c = 0; c < 4; ++c) pivot[c][l] = q[at + c];
       for (std::size_t c = 0; c < 4; ++c) sum[c][l] = 0;
     }
@@ -277,7 +265,7 @@ struct BlendQlbLanes {
         const bool ordinary = runtime::is_ordinary_square_lane(n2);
         ok[l] = ok[l] & Flag(ordinary & decided);
         const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2));
-        const S f0 = w[k * l + i] / w_max[l];
+        const S f0 = w[k * l + i] / weights.w_max[l];
         const S f = negative ? -f0 : f0;
         sum[0][l] = sum[0][l] + f * r.s;
         sum[1][l] = sum[1][l] + f * r.e23;
@@ -587,6 +575,54 @@ struct FromAxisAngleLanes {
       out[1][l] = -(-sn[l] * u[1][l]);
       out[2][l] = -(-sn[l] * u[2][l]);
       out[3][l] = cs[l];
+    }
+  }
+};
+
+/// SKIN-1 as RotorOps::skin_linear computes it with Method2 where the weights pass EDGE-9 (as in
+/// BlendQlbLanes), every |q_i|^2 is ordinary and v and every t_i finite: sum_i (w_i/w_max)
+/// (M_i v + t_i) over the total of the w_i/w_max, summed from 0 in influence order, with M_i =
+/// to_matrix(Phi(q_i/|q_i|)). Data: element e's k quaternions at q + 4 k e, translations at
+/// t + 3 k e, weights at w + k e and its vertex at v + 3 e (the ABI's arrays).
+template <class S, std::size_t L>
+struct SkinLinearLanes {
+  S out[3][L];
+  Flag ok[L];
+
+  void run(std::size_t k, const S* q, const S* t, const S* w, const S* v) {
+    runtime::LaneWeights<S, L> weights;
+    weights.scan(k, w);
+    S p[3][L], acc[3][L], total[L];
+    for (std::size_t l = 0; l < L; ++l)
+      for (std::size_t c = 0; c < 3; ++c) p[c][l] = v[3 * l + c];
+    for (std::size_t l = 0; l < L; ++l) {
+      ok[l] = weights.ok[l] & Flag(runtime::finite3_lane(p[0][l], p[1][l], p[2][l]));
+      acc[0][l] = acc[1][l] = acc[2][l] = total[l] = 0;
+    }
+    S x[4][L], tr[3][L];
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l) {
+        for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * k * l + 4 * i + c];
+        for (std::size_t c = 0; c < 3; ++c) tr[c][l] = t[3 * k * l + 3 * i + c];
+      }
+      for (std::size_t l = 0; l < L; ++l) {
+        const S n2 = norm2_lane(x, l);
+        const bool ordinary = runtime::is_ordinary_square_lane(n2);
+        const bool finite_t = runtime::finite3_lane(tr[0][l], tr[1][l], tr[2][l]);
+        ok[l] = ok[l] & Flag(ordinary & finite_t);
+        const S wi = w[k * l + i] / weights.w_max[l];
+        total[l] = total[l] + wi;
+        const impl::Mat3<S> m = to_matrix(unit_rotor_lane(x, l, std::sqrt(n2)));
+        const S v0 = p[0][l], v1 = p[1][l], v2 = p[2][l];
+        acc[0][l] = acc[0][l] + wi * (m[0] * v0 + m[3] * v1 + m[6] * v2 + tr[0][l]);
+        acc[1][l] = acc[1][l] + wi * (m[1] * v0 + m[4] * v1 + m[7] * v2 + tr[1][l]);
+        acc[2][l] = acc[2][l] + wi * (m[2] * v0 + m[5] * v1 + m[8] * v2 + tr[2][l]);
+      }
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      out[0][l] = acc[0][l] / total[l];
+      out[1][l] = acc[1][l] / total[l];
+      out[2][l] = acc[2][l] / total[l];
     }
   }
 };

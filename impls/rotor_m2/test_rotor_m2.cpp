@@ -93,6 +93,7 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("EXP-1");
   RC_CLAUSE("AXANG-2");
   RC_CLAUSE("AXANG-3");
+  RC_CLAUSE("SKIN-1");
   const rc_impl* f = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 0);
   const rc_impl* d = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 1);
   ASSERT_TRUE(f != nullptr && d != nullptr && f->f32_v3 != nullptr && d->f64_v3 != nullptr);

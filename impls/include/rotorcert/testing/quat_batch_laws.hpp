@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1, SKIN-1 and (ops3)
 /// AXANG-3, AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -192,6 +192,17 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
       }
       check(k == 1 ? "blend_qlb k=1" : k == 4 ? "blend_qlb k=4" : "blend_qlb k=8", 4,
             [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.blend_qlb(n, k, &qs[4 * k * i], &ws[k * i], o, s); });
+      // SKIN-1 on the same influences and weights, with translations in [-10, 10] (one Inf in
+      // every 17th element) and the vectors v as vertices (their Inf among them).
+      if (ops.skin_linear != nullptr) {
+        std::vector<S> ts(3 * k * kCases);
+        for (std::size_t j = 0; j < ts.size(); ++j) ts[j] = S(10 * unit(gen));
+        for (std::size_t i = 5; i < kCases; i += 17) ts[3 * k * i + 1] = std::numeric_limits<S>::infinity();
+        check(k == 1 ? "skin_linear k=1" : k == 4 ? "skin_linear k=4" : "skin_linear k=8", 3,
+              [&](std::size_t n, std::size_t i, S* o, Status s) {
+                return ops.skin_linear(n, k, &qs[4 * k * i], &ts[3 * k * i], &ws[k * i], &v[3 * i], o, s);
+              });
+      }
     }
 }
 
