@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-2, AXANG-3, AXANG-4, LOG-1, EXP-1,
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-1..4, LOG-1, EXP-1,
 // NLERP-1, SLERP-2, QLB-1 and SKIN-1 of RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
@@ -541,6 +541,37 @@ struct ToAngleLanes {
       const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
       ok[l] = Flag(ordinary_q & (ordinary_b | no_plane));
       n[l] = std::sqrt(n2), s[l] = r.s;
+    }
+    for (std::size_t l = 0; l < L; ++l) out[0][l] = S(2) * atan2_in_binary64(n[l], s[l]);
+  }
+};
+
+/// AXANG-1 as RotorOps::to_axis_angle computes it with Method2 where ToAngleLanes computes the
+/// angle and the axis is +z for a zero vector part v (axis_of's own case) or v/|v| for an ordinary
+/// |v|^2 (ToAxisLanes). Data: out[0] the angle, out[1..3] the axis.
+template <class S, std::size_t L>
+struct ToAxisAngleLanes {
+  S out[4][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* /*unused*/) {
+    S x[4][L], n[L], s[L];
+    load_lanes(q, x);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S n2q = norm2_lane(x, l);
+      const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2q));
+      const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12;
+      const S v2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l];
+      const bool no_plane = (r.e23 == 0) & (r.e31 == 0) & (r.e12 == 0);  // norm3 returns +0
+      const bool no_vector = (x[0][l] == 0) & (x[1][l] == 0) & (x[2][l] == 0);
+      const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
+      const bool ordinary_v = runtime::is_ordinary_square_lane(v2);
+      ok[l] = Flag(ordinary_q & (ordinary_b | no_plane) & (ordinary_v | no_vector));
+      n[l] = std::sqrt(n2), s[l] = r.s;
+      const S nv = std::sqrt(v2);
+      out[1][l] = no_vector ? S(0) : x[0][l] / nv;
+      out[2][l] = no_vector ? S(0) : x[1][l] / nv;
+      out[3][l] = no_vector ? S(1) : x[2][l] / nv;
     }
     for (std::size_t l = 0; l < L; ++l) out[0][l] = S(2) * atan2_in_binary64(n[l], s[l]);
   }

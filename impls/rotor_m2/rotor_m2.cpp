@@ -80,6 +80,22 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
     return runtime::lanes_or_element<lanes::FromAxisAngleLanes, &Base::from_axis_angle, 1, 3, 4>(n, angle, axis, out,
                                                                                                   status);
   }
+  /// AXANG-1 batches: lanes as for to_angle and to_axis, the angle and the axis stored apart.
+  ROTORCERT_TARGET_CLONES_FLAT static int to_axis_angle_batch(std::size_t n, const S* q, S* angle, S* axis,
+                                                             std::uint8_t* status) {
+    const auto checked = [&](std::size_t e) {
+      rotorcert::impl::detail::Elementwise<&Base::to_axis_angle, decltype(&Base::to_axis_angle)>::run(
+          1, q + 4 * e, angle + e, axis + 3 * e, status + e);
+    };
+    const auto store = [&](std::size_t e, const auto& lanes, std::size_t l) {
+      angle[e] = lanes.out[0][l];
+      for (std::size_t c = 0; c < 3; ++c) axis[3 * e + c] = lanes.out[1 + c][l];
+      status[e] = RC_OK;
+    };
+    runtime::in_lanes_or_checked<lanes::ToAxisAngleLanes>(
+        n, q, 4, q, 0, [](auto& l, const S* x, const S* y) { l.run(x, y); }, store, checked, checked);
+    return 0;
+  }
   /// AXANG-3 batches (ABI version 3).
   ROTORCERT_TARGET_CLONES_FLAT static int to_angle_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::ToAngleLanes, &Base::to_angle, 4, 1>(n, q, out, status);

@@ -92,6 +92,7 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("LOG-1");
   RC_CLAUSE("EXP-1");
   RC_CLAUSE("AXANG-2");
+  RC_CLAUSE("AXANG-1");
   RC_CLAUSE("AXANG-3");
   RC_CLAUSE("SKIN-1");
   const rc_impl* f = rotorcert_impl_entry_rotor_m2(RC_ABI_VERSION, 0);

@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1, SKIN-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, AXANG-1, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1, SKIN-1 and (ops3)
 /// AXANG-3, AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -86,7 +86,7 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
     check("nlerp", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.nlerp(n, &a[4 * i], &b[4 * i], &t[i], o, s);
     });
-  // LOG-1 and AXANG-3 on the quaternions above, on near-identities (w = 2^10 |v|: log's series)
+  // LOG-1, AXANG-1 and AXANG-3 on the quaternions above, on near-identities (w = 2^10 |v|: log's series)
   // and on rotations so near the identity that the rotor's |B|^2 underflows; EXP-1 on the vectors above and on tiny ones (|v|^2 < eps: exp's
   // series) in every fifth; AXANG-2 on the vectors as axes with angles 7 t (NaN and 7e30
   // among them) and a zero axis in every seventh.
@@ -105,6 +105,16 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
     }
     if (ops.log != nullptr)
       check("log", 3, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.log(n, &qs[4 * i], o, s); });
+    if (ops.to_axis_angle != nullptr)  // angle and axis side by side in one output of 4 scalars
+      check("to_axis_angle", 4, [&](std::size_t n, std::size_t i, S* o, Status s) {
+        std::vector<S> angle(n), axis(3 * n);
+        const int r = ops.to_axis_angle(n, &qs[4 * i], angle.data(), axis.data(), s);
+        for (std::size_t e = 0; e < n; ++e) {
+          o[4 * e] = angle[e];
+          for (std::size_t c = 0; c < 3; ++c) o[4 * e + 1 + c] = axis[3 * e + c];
+        }
+        return r;
+      });
     if (ops3 != nullptr && ops3->to_angle != nullptr)
       check("to_angle", 1, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops3->to_angle(n, &qs[4 * i], o, s); });
     if (ops.exp != nullptr)
