@@ -11,6 +11,11 @@
 // normalisation first scales by a power of two near the largest |component| (exact), so that
 // subnormal and near-overflow inputs keep full accuracy; where the unscaled sum of squares shows
 // that no scaling is needed (runtime/ordinary_range.hpp), the same formula runs unscaled.
+//
+// Batches: the ordinary elements of dq_from_rotation_translation, dq_compose, dq_normalize,
+// dq_apply_point and dq_blend (dlb_lanes.hpp), and of normalize, compose and apply_vector (the
+// QuatLanes below), run in SIMD lanes with the element function's bits; every other element takes
+// the checked element function (dq_blend's first tries the inline dlb_ordinary()).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -538,6 +543,16 @@ struct Dq {
     return Status::ok;
   }
 
+  /// The batch of dq_from_rotation_translation: SIMD lanes (dlb_lanes.hpp: the same bits) in
+  /// blocks of 16, then of 4, with the clones' widths of dq_apply_point_batch; a lane that is not
+  /// ok, and the last n mod 4 elements, by the checked function above. dq_compose_batch and
+  /// dq_normalize_batch below run the same way.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_from_rotation_translation_batch(std::size_t n, const S* q, const S* t,
+                                                                            S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::dq_lanes::FromRotationTranslationLanes,
+                                     &Dq::dq_from_rotation_translation, 4, 3, 8>(n, q, t, out, status);
+  }
+
   /// DQ-2 on the DQ-4-normalised inputs. The clause defines the product of the inputs as given;
   /// the dual norm is multiplicative, so this is that product's DQ-4 normalisation, the same
   /// rigid motion, which is what METRIC-7 compares.
@@ -545,6 +560,13 @@ struct Dq {
     if (!valid(load(a)) || !valid(load(b))) return Status::domain_error;
     out = store(normalized(load(a)) * normalized(load(b)));
     return Status::ok;
+  }
+
+  /// The batch of dq_compose (dlb_lanes.hpp DqComposeLanes), as dq_from_rotation_translation_batch.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_compose_batch(std::size_t n, const S* a, const S* b, S* out,
+                                                          std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::dq_lanes::DqComposeLanes, &Dq::dq_compose, 8, 8, 8>(n, a, b, out,
+                                                                                                   status);
   }
 
   static Status dq_apply_point(const rci::DualQuat<S>& d, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
@@ -621,6 +643,11 @@ struct Dq {
     if (!valid(load(d))) return Status::domain_error;
     out = store(normalized(load(d)));
     return Status::ok;
+  }
+
+  /// The batch of dq_normalize (dlb_lanes.hpp DqNormalizeLanes), as dq_from_rotation_translation_batch.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_normalize_batch(std::size_t n, const S* d, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::dq_lanes::DqNormalizeLanes, &Dq::dq_normalize, 8, 8>(n, d, out, status);
   }
 
   static Status dq_sclerp(const rci::DualQuat<S>& a, const rci::DualQuat<S>& b, const S& t, rci::DualQuat<S>& out) {

@@ -9,6 +9,11 @@
 // Defined outcomes (EDGE-5 .. EDGE-9): a non-finite component anywhere, a zero rotor part or a
 // zero rotation, a zero axis, or bad weights give DOMAIN_ERROR (the adaptor writes the NaNs).
 // A non-unit input motor stands for its normalisation M (M ~M)^(-1/2) (= DQ-4).
+//
+// Batches: the ordinary elements of dq_from_rotation_translation, dq_compose, dq_normalize,
+// dq_apply_point and dq_blend run in SIMD lanes with the element function's bits
+// (motor_lanes.hpp); every other element takes the checked element function (dq_blend's first
+// tries the inline blend_ordinary()).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -156,6 +161,15 @@ struct MotorPga {
     return Status::ok;
   }
 
+  /// The batch of dq_from_rotation_translation, as dq's (dq.cpp): SIMD lanes (motor_lanes.hpp: the
+  /// same bits) in blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements,
+  /// by the checked function above. dq_compose_batch and dq_normalize_batch below run the same way.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_from_rotation_translation_batch(std::size_t n, const S* q, const S* t,
+                                                                            S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::motor_lanes::FromRotationTranslationLanes,
+                                     &MotorPga::dq_from_rotation_translation, 4, 3, 8>(n, q, t, out, status);
+  }
+
   /// DQ-7 (ABI version 3) in the algebra: the unit motor M = T R of the input; R is its Euclidean
   /// (real) part read back by MOTOR-1, t the image M O ~M of the origin O = e123 (R O ~R = O).
   static Status dq_to_rotation_translation(const rci::DualQuat<S>& d, rci::Quat<S>& q, rci::Vec3<S>& t) {
@@ -231,6 +245,13 @@ struct MotorPga {
     return Status::ok;
   }
 
+  /// The batch of dq_compose (motor_lanes.hpp DqComposeLanes), as dq_from_rotation_translation_batch.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_compose_batch(std::size_t n, const S* a, const S* b, S* out,
+                                                          std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::motor_lanes::DqComposeLanes, &MotorPga::dq_compose, 8, 8, 8>(
+        n, a, b, out, status);
+  }
+
   /// MOTOR-2: the sandwich M P ~M of the unit motor.
   static Status dq_apply_point(const rci::DualQuat<S>& d, const rci::Vec3<S>& p, rci::Vec3<S>& out) {
     if (!valid_dq(d) || !finite(p)) return Status::domain_error;
@@ -251,6 +272,12 @@ struct MotorPga {
     if (!valid_dq(d)) return Status::domain_error;
     out = pga::to_dual_quaternion(unit_motor(d));
     return Status::ok;
+  }
+
+  /// The batch of dq_normalize (motor_lanes.hpp DqNormalizeLanes), as dq_from_rotation_translation_batch.
+  ROTORCERT_TARGET_CLONES_FLAT static int dq_normalize_batch(std::size_t n, const S* d, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::motor_lanes::DqNormalizeLanes, &MotorPga::dq_normalize, 8, 8>(
+        n, d, out, status);
   }
 
   /// DQ-5 through MOTOR-4: exp(t log(M_B ~M_A)) M_A on the shorter arc.

@@ -3,7 +3,7 @@
 // is one of the last n mod 4) by the element function through impl.hpp's Elementwise loop, so
 // that the batch keeps the element function's outcomes, NaN poisoning of DOMAIN_ERROR included.
 // For the ops of one or two inputs (and a parameter t) and one output array (normalize, compose,
-// apply_vector, nlerp).
+// apply_vector, nlerp; dq_normalize, dq_compose, dq_from_rotation_translation, dq_apply_point).
 #pragma once
 
 #include <cstddef>

@@ -132,6 +132,17 @@ TYPED_TEST_P(RigidLaws, BlendFastAndCheckedPathsAgree) {
   blend_fast_and_checked_paths_agree<double>(TypeParam::f64());
 }
 
+TYPED_TEST_P(RigidLaws, DqBatchesGiveTheElementBits) {
+  RC_CLAUSE("DQ-1");
+  RC_CLAUSE("DQ-2");
+  RC_CLAUSE("DQ-4");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  dq_batches_give_the_element_bits<float>(TypeParam::f32());
+  dq_batches_give_the_element_bits<double>(TypeParam::f64());
+}
+
 /// The rigid ops against the reference (a smoke check: the systematic run is the suite's). A table
 /// that blends otherwise (motor_pga: MOTOR-5) names that clause in its own file's test.
 TYPED_TEST_P(RigidLaws, SmokeAgainstReference) {
@@ -149,6 +160,7 @@ REGISTER_TYPED_TEST_SUITE_P(RigidLaws, NormaliseMakesRealUnitAndDualOrthogonal, 
                             LogNearTheCutKeepsTheScrew, SclerpOfPureTranslationIsLinearInT,
                             DqsKeepsTheRadiusOfATwistedVertex, IdentityInIdentityOut, OutsideTheDomainIsDomainErrorWithNaN,
                             BlendDoesNotFlipOnExactlyZeroDot, ApplyPointFastAndCheckedPathsAgree,
-                            BlendFastAndCheckedPathsAgree, SmokeAgainstReference);
+                            BlendFastAndCheckedPathsAgree, DqBatchesGiveTheElementBits,
+                            SmokeAgainstReference);
 
 }  // namespace rotorcert::testing::rigid_laws

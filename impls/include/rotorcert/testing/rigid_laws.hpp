@@ -1,4 +1,4 @@
-// Laws of the dual-quaternion ops (DQ-4, DQ-5, DQ-6, EDGE-1, EDGE-3, EDGE-6, EDGE-7, EDGE-9) that
+// Laws of the dual-quaternion ops (DQ-1 .. DQ-6, EDGE-1, EDGE-3, EDGE-5 .. EDGE-7, EDGE-9) that
 // every built-in table offering them must keep, written once for any table: dq and motor_pga run
 // the same checks through their ABI tables (impls/dq/test_dq.cpp, impls/motor_pga/test_motor_pga.cpp),
 // each test naming its clauses. Tolerances are the spec's eps class bars.
@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <type_traits>
@@ -430,6 +432,98 @@ template <class S> void apply_point_fast_and_checked_paths_agree(const Ops<S>& o
     for (std::size_t v = 0; v < 3; ++v)
       for (std::size_t c = 0; c < 3; ++c)
         EXPECT_PRED2(same, mixed[3 * i + v][c], want[i][c]) << "case " << i << " component " << c << ": interleaved, variant " << v;
+}
+
+/// DQ-1, DQ-2, DQ-4, EDGE-5 .. EDGE-7: the batches of dq_from_rotation_translation, dq_compose and
+/// dq_normalize, which run their ordinary elements in SIMD lanes (dq's dlb_lanes.hpp, motor_pga's
+/// motor_lanes.hpp), give bit for bit and status for status what a one-element call (the element
+/// function) gives for each element alone. 61 elements: 3 blocks of 16, 3 of 4 and one alone
+/// (runtime/lane_blocks.hpp). Among ordinary inputs of sizes 1/4 .. 4 (EDGE-5) sit, spread over
+/// blocks and lanes: both parts, the real part alone or the dual part alone scaled by 2^+-E beyond
+/// the ordinary range (runtime/ordinary_range.hpp), zero real parts and rotations (EDGE-6),
+/// subnormal components, NaN and infinities in the real part, the dual part and the translation
+/// (EDGE-7), an exactly zero dual part, and dual parts nearly parallel to the real part (whose
+/// DQ-4 projection cancels: runtime/perpendicular_part.hpp), so that lanes of one block take
+/// different paths. Any difference between the lanes' arithmetic and the element function's
+/// shows as a bit.
+template <class S> void dq_batches_give_the_element_bits(const Ops<S>& ops) {
+  using Lim = std::numeric_limits<S>;
+  constexpr int E = std::is_same_v<S, float> ? 40 : 300;  // |r|^2 ~ 2^(+-2E): beyond 2^(+-emax/2)
+  constexpr std::size_t kCases = 61;                       // 3 x 16 + 3 x 4 + 1
+  LawRng rng(61);
+  // The kind of input `which` (0: a, 1: b, 2: q, 3: t) of element i: 1 .. 12 a special below,
+  // else ordinary; 7 i spreads each kind over two or three blocks and lanes, the offsets put the
+  // inputs' specials at different elements.
+  const auto kind = [](std::size_t i, std::size_t which) { return int((7 * i + std::size_t{11} * which) % 29); };
+  // A special of the given kind written into the real part r and the dual part d of an ordinary
+  // dual quaternion (q and a scratch dual part for the rotation).
+  const auto special = [&](int k, S* r, S* d) {
+    switch (k) {
+      case 1: for (int c = 0; c < 4; ++c) r[c] = std::ldexp(r[c], E), d[c] = std::ldexp(d[c], E); break;
+      case 2: for (int c = 0; c < 4; ++c) r[c] = std::ldexp(r[c], -E), d[c] = std::ldexp(d[c], -E); break;
+      case 3: for (int c = 0; c < 4; ++c) r[c] = std::ldexp(r[c], -E); break;
+      case 4: for (int c = 0; c < 4; ++c) r[c] = S(c % 2 ? -0.0 : 0.0); break;
+      case 5: r[0] = Lim::denorm_min(), r[1] = -S(0), r[2] = 3 * Lim::denorm_min(), r[3] = 0; break;
+      case 6: d[0] = Lim::denorm_min(), d[1] = 0, d[2] = -2 * Lim::denorm_min(), d[3] = -S(0); break;  // |d|^2 = 0
+      case 7: r[1] = Lim::quiet_NaN(); break;
+      case 8: d[3] = -Lim::infinity(); break;
+      case 9: {  // d = c r + a little: along^2 > 15/16 |d|^2
+        const double big = std::ldexp(rng.uniform(0.5, 1) * (r[0] > 0 ? 1 : -1), int(rng.uniform(4, 20)));
+        for (int c = 0; c < 4; ++c) d[c] = S(big * double(r[c]) + rng.uniform(-1, 1));
+        break;
+      }
+      case 10: for (int c = 0; c < 4; ++c) d[c] = std::ldexp(d[c], E); break;
+      case 11: r[2] = Lim::infinity(); break;
+      case 12: for (int c = 0; c < 4; ++c) d[c] = 0; break;
+      default: break;
+    }
+  };
+  std::vector<S> a(8 * kCases), b(8 * kCases), q(4 * kCases), t(3 * kCases);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    for (S* x : {&a[8 * i], &b[8 * i]}) {
+      const double size = rng.uniform(0.25, 4);
+      for (int c = 0; c < 4; ++c) x[c] = S(rng.uniform(-1, 1) * size), x[4 + c] = S(rng.uniform(-5, 5) * size);
+    }
+    const double size = rng.uniform(0.25, 4);
+    for (int c = 0; c < 4; ++c) q[4 * i + c] = S(rng.uniform(-1, 1) * size);
+    for (int c = 0; c < 3; ++c) t[3 * i + c] = S(rng.uniform(-10, 10));
+    special(kind(i, 0), &a[8 * i], &a[8 * i + 4]);
+    special(kind(i, 1), &b[8 * i], &b[8 * i + 4]);
+    S scratch[4] = {1, 2, 3, 4};
+    special(kind(i, 2), &q[4 * i], scratch);
+    S* ti = &t[3 * i];
+    switch (kind(i, 3)) {
+      case 6: ti[0] = Lim::denorm_min(), ti[1] = -S(0), ti[2] = -5 * Lim::denorm_min(); break;
+      case 7: ti[1] = Lim::quiet_NaN(); break;
+      case 8: ti[2] = -Lim::infinity(); break;
+      case 10: ti[0] = Lim::max() / 4; break;  // finite: the lanes take it, as the element function does
+      case 12: ti[0] = ti[1] = ti[2] = 0; break;
+      default: break;
+    }
+  }
+  // One op: the batch of all cases against one-element calls from element i, 8 output scalars per
+  // element, bit for bit (NaN outputs included) and status for status.
+  const auto check = [&](const char* name, auto call) {
+    std::vector<S> batch(8 * kCases), one(8);
+    std::vector<std::uint8_t> st(kCases, 9);
+    std::uint8_t st1 = 9;
+    ASSERT_EQ(call(kCases, std::size_t{0}, batch.data(), st.data()), 0) << name;
+    for (std::size_t i = 0; i < kCases; ++i) {
+      ASSERT_EQ(call(1, i, one.data(), &st1), 0) << name;
+      EXPECT_EQ(st[i], st1) << name << " element " << i;
+      EXPECT_EQ(0, std::memcmp(&batch[8 * i], one.data(), 8 * sizeof(S))) << name << " element " << i;
+    }
+  };
+  using Status = std::uint8_t*;
+  check("dq_from_rotation_translation", [&](std::size_t n, std::size_t i, S* o, Status s) {
+    return ops.dq_from_rotation_translation(n, &q[4 * i], &t[3 * i], o, s);
+  });
+  check("dq_compose",
+        [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.dq_compose(n, &a[8 * i], &b[8 * i], o, s); });
+  check("dq_normalize",
+        [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.dq_normalize(n, &a[8 * i], o, s); });
+  check("dq_normalize of b",
+        [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.dq_normalize(n, &b[8 * i], o, s); });
 }
 
 }  // namespace rotorcert::testing::rigid_laws
