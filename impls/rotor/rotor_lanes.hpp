@@ -52,6 +52,19 @@ template <class S, std::size_t L>
   return {x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
 }
 
+/// Phi^-1(normalized(r)) into lane l of out where |r|^2 is ordinary; returns whether it is.
+/// normalized(Rotor3) divides the quaternion (e23, e31, e12, s) by its norm, in that order.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline bool normalized_readout_lane(const Rotor3<S>& r, std::size_t l, S (&out)[4][L]) {
+  const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12 + r.s * r.s;
+  const S n = std::sqrt(n2);
+  out[0][l] = -(r.e23 / n);
+  out[1][l] = -(r.e31 / n);
+  out[2][l] = -(r.e12 / n);
+  out[3][l] = r.s / n;
+  return runtime::is_ordinary_square_lane(n2);
+}
+
 /// NORM-1 as RotorOps::normalize with Method2 computes it: Phi^-1(Phi(q/|q|)) = normalized(q),
 /// q / sqrt(x^2 + y^2 + z^2 + w^2), four divisions.
 template <class S, std::size_t L>
@@ -220,15 +233,8 @@ struct NlerpLanes {
       const S k = S(1) / (at > S(1) ? at : S(1)), u = tt[l] * k;
       const Rotor3<S> sum{k * ra.s + u * (rb.s - ra.s), k * ra.e23 + u * (rb.e23 - ra.e23),
                           k * ra.e31 + u * (rb.e31 - ra.e31), k * ra.e12 + u * (rb.e12 - ra.e12)};
-      // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
-      const S ns2 = sum.e23 * sum.e23 + sum.e31 * sum.e31 + sum.e12 * sum.e12 + sum.s * sum.s;
-      const bool ordinary_sum = runtime::is_ordinary_square_lane(ns2);
+      const bool ordinary_sum = normalized_readout_lane(sum, l, out);
       ok[l] = Flag(ordinary_a & ordinary_b & finite_t & decided & ordinary_sum);
-      const S ns = std::sqrt(ns2);
-      out[0][l] = -(sum.e23 / ns);
-      out[1][l] = -(sum.e31 / ns);
-      out[2][l] = -(sum.e12 / ns);
-      out[3][l] = sum.s / ns;
     }
   }
 };
@@ -273,15 +279,9 @@ struct BlendQlbLanes {
         sum[3][l] = sum[3][l] + f * r.e12;
       }
     }
-    // normalized(Rotor3): the quaternion (e23, e31, e12, s) over its norm, in that order.
     for (std::size_t l = 0; l < L; ++l) {
-      const S ns2 = sum[1][l] * sum[1][l] + sum[2][l] * sum[2][l] + sum[3][l] * sum[3][l] + sum[0][l] * sum[0][l];
-      ok[l] = ok[l] & Flag(runtime::is_ordinary_square_lane(ns2));
-      const S ns = std::sqrt(ns2);
-      out[0][l] = -(sum[1][l] / ns);
-      out[1][l] = -(sum[2][l] / ns);
-      out[2][l] = -(sum[3][l] / ns);
-      out[3][l] = sum[0][l] / ns;
+      const bool ordinary_sum = normalized_readout_lane(Rotor3<S>{sum[0][l], sum[1][l], sum[2][l], sum[3][l]}, l, out);
+      ok[l] = ok[l] & Flag(ordinary_sum);
     }
   }
 };

@@ -3,10 +3,10 @@
 // every operation in Cl(3,0) (impls/rotor/rotor3.hpp) and the quaternion read back by Phi^-1.
 // The same code as rotor_m1 except this conversion.
 //
-// normalize, compose, inverse, apply_vector, apply_bivector, to_matrix, to_axis, nlerp and
-// blend_qlb batches run their ordinary elements in SIMD lanes (rotor/rotor_lanes.hpp: RotorOps' operations in
-// RotorOps' order, so the same bits) and every other element, and the last n mod 4, through
-// RotorOps, which scales only where it must.
+// Every batch but sqrt, apply_trivector and blend_log runs its ordinary elements in SIMD lanes
+// (rotor/rotor_lanes.hpp: RotorOps' operations in RotorOps' order, so the same bits; the libm
+// calls of the angle, log, exp and slerp lanes are RotorOps' own, made one lane at a time) and
+// every other element, and the last n mod 4, through RotorOps, which scales only where it must.
 #include <cstddef>
 #include <cstdint>
 
