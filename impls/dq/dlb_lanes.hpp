@@ -26,6 +26,7 @@
 #include <limits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_weights.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
 namespace rotorcert::dq_lanes {
@@ -42,24 +43,12 @@ struct DlbLanes {
   void run(std::size_t k, const S* d, const S* w) {
     constexpr S kMax = std::numeric_limits<S>::max();
     constexpr S kLo = runtime::OrdinaryRange<S>::kLo, kHi = runtime::OrdinaryRange<S>::kHi;
-    // EDGE-9: weights in [0, max], the largest, the pivot (first weight > 0).
-    S w_max[L], pivot[4][L], sum[8][L];
-    Flag p[L];
+    runtime::LaneWeights<S, L> weights;  // EDGE-9
+    weights.scan(k, w);
+    S pivot[4][L], sum[8][L];
     for (std::size_t l = 0; l < L; ++l) {
-      ok[l] = true;
-      w_max[l] = 0;
-      p[l] = Flag(k);
-    }
-    for (std::size_t i = 0; i < k; ++i)
-      for (std::size_t l = 0; l < L; ++l) {
-        const S wi = w[k * l + i];
-        ok[l] = ok[l] & Flag((wi >= 0) & (wi <= kMax));
-        w_max[l] = wi > w_max[l] ? wi : w_max[l];
-        p[l] = ((p[l] == Flag(k)) & (wi > 0)) ? Flag(i) : p[l];
-      }
-    for (std::size_t l = 0; l < L; ++l) {
-      ok[l] = ok[l] & Flag(p[l] != Flag(k));
-      const std::size_t at = 8 * k * l + 8 * (p[l] == Flag(k) ? 0 : std::size_t(p[l]));
+      ok[l] = weights.ok[l];
+      const std::size_t at = weights.pivot_offset(k, 8, l);
       for (std::size_t c = 0; c < 4; ++c) pivot[c][l] = d[at + c];
       for (std::size_t c = 0; c < 8; ++c) sum[c][l] = 0;
     }
@@ -84,7 +73,7 @@ struct DlbLanes {
         const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], pivot[0][l], pivot[1][l],
                                                          pivot[2][l], pivot[3][l], negative);
         good = good & decided;
-        const S f0 = w[k * l + i] / w_max[l];
+        const S f0 = w[k * l + i] / weights.w_max[l];
         const S f = negative ? -f0 : f0;
         sum[0][l] = sum[0][l] + f * u0;
         sum[1][l] = sum[1][l] + f * u1;

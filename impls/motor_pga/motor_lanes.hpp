@@ -25,6 +25,7 @@
 #include <limits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_weights.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
 namespace rotorcert::motor_lanes {
@@ -80,24 +81,12 @@ struct BlendLanes {
 
   /// The L elements starting at d (influences) and w (weights), k >= 1 influences each.
   void run(std::size_t k, const S* d, const S* w) {
-    constexpr S kMax = std::numeric_limits<S>::max();
-    S w_max[L], pivot[4][L], sum[8][L], m[8][L];
-    Flag p[L];
+    runtime::LaneWeights<S, L> weights;  // EDGE-9
+    weights.scan(k, w);
+    S pivot[4][L], sum[8][L], m[8][L];
     for (std::size_t l = 0; l < L; ++l) {
-      ok[l] = 1;
-      w_max[l] = 0;
-      p[l] = Flag(k);
-    }
-    for (std::size_t i = 0; i < k; ++i)
-      for (std::size_t l = 0; l < L; ++l) {
-        const S wi = w[k * l + i];
-        ok[l] = ok[l] & Flag((wi >= 0) & (wi <= kMax));  // EDGE-9
-        w_max[l] = wi > w_max[l] ? wi : w_max[l];
-        p[l] = ((p[l] == Flag(k)) & (wi > 0)) ? Flag(i) : p[l];
-      }
-    for (std::size_t l = 0; l < L; ++l) {
-      ok[l] = ok[l] & Flag(p[l] != Flag(k));
-      const S* x = d + 8 * k * l + 8 * (p[l] == Flag(k) ? 0 : std::size_t(p[l]));
+      ok[l] = weights.ok[l];
+      const S* x = d + weights.pivot_offset(k, 8, l);
       pivot[0][l] = x[3];
       pivot[1][l] = -x[0];
       pivot[2][l] = -x[1];
@@ -115,7 +104,7 @@ struct BlendLanes {
         const bool decided = runtime::filtered_dot4_lane(m[0][l], m[1][l], m[2][l], m[3][l], pivot[0][l], pivot[1][l],
                                                          pivot[2][l], pivot[3][l], negative);
         good = good & decided;
-        const S f0 = w[k * l + i] / w_max[l];
+        const S f0 = w[k * l + i] / weights.w_max[l];
         const S f = negative ? -f0 : f0;
         sum[0][l] = sum[0][l] + f * u[0];  // written out: a loop over c here keeps l's loop scalar
         sum[1][l] = sum[1][l] + f * u[1];
