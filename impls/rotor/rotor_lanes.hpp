@@ -313,10 +313,12 @@ struct FromMatrixLanes {
       const W m02 = x[6][l], m12 = x[7][l], m22 = x[8][l];
       // Written out term by term: GCC 12 vectorises no loop nest with inner loops here.
       const auto bounded = [](W e) { return std::abs(e) <= W(2); };  // false for NaN
-      bool good = bounded(m00) & bounded(m10) & bounded(m20) & bounded(m01) & bounded(m11) & bounded(m21) &
-                  bounded(m02) & bounded(m12) & bounded(m22);
+      // Flags, not bools: clang warns on & between two calls.
+      Flag good = Flag(bounded(m00)) & Flag(bounded(m10)) & Flag(bounded(m20)) & Flag(bounded(m01)) &
+                  Flag(bounded(m11)) & Flag(bounded(m21)) & Flag(bounded(m02)) & Flag(bounded(m12)) &
+                  Flag(bounded(m22));
       const W det = m00 * (m11 * m22 - m12 * m21) - m01 * (m10 * m22 - m12 * m20) + m02 * (m10 * m21 - m11 * m20);
-      good = good & (det > W(0.5));
+      good = good & Flag(det > W(0.5));
       // orthonormality_defect2: g_ij = -[i = j] + sum_k at(k, i) at(k, j), g_ij^2 summed row by row.
       const auto g2 = [](W init, W a0, W a1, W a2, W b0, W b1, W b2) {
         const W g = init + a0 * b0 + a1 * b1 + a2 * b2;
@@ -327,7 +329,7 @@ struct FromMatrixLanes {
                        g2(W(-1), m01, m11, m21, m01, m11, m21) + g2(W(0), m01, m11, m21, m02, m12, m22) +
                        g2(W(0), m02, m12, m22, m00, m10, m20) + g2(W(0), m02, m12, m22, m01, m11, m21) +
                        g2(W(-1), m02, m12, m22, m02, m12, m22);
-      good = good & (defect <= kTolerance * kTolerance);
+      good = good & Flag(defect <= kTolerance * kTolerance);
       // shepperd_rotor: the case, then its radicand and components (q = [x, y, z, w]).
       const W trace = m00 + m11 + m22;
       const bool c0 = (trace >= m00) & (trace >= m11) & (trace >= m22);
@@ -344,14 +346,14 @@ struct FromMatrixLanes {
       const W qw = c0 ? v : c1 ? dx * f : c2 ? dy * f : dz * f;
       // normalized(q) on an ordinary |q|^2 (then q is finite and nonzero: is_rotation holds).
       const W qn2 = qx * qx + qy * qy + qz * qz + qw * qw;
-      good = good & runtime::is_ordinary_square_lane(qn2);
+      good = good & Flag(runtime::is_ordinary_square_lane(qn2));
       const W qn = std::sqrt(qn2);
       // The rotor {w, -x, -y, -z}/|q|; binary32 rounds it and normalises {e23, e31, e12, s} again.
       S a0, a1, a2, a3;  // PhiReadout::out of rotor_from_matrix's rotor: [x, y, z, w]
       if constexpr (std::is_same_v<S, float>) {
         const float e23 = float(-(qx / qn)), e31 = float(-(qy / qn)), e12 = float(-(qz / qn)), s = float(qw / qn);
         const float n2 = e23 * e23 + e31 * e31 + e12 * e12 + s * s;
-        good = good & runtime::is_ordinary_square_lane(n2);
+        good = good & Flag(runtime::is_ordinary_square_lane(n2));
         const float n = std::sqrt(n2);
         a0 = -(e23 / n), a1 = -(e31 / n), a2 = -(e12 / n), a3 = s / n;
       } else {
@@ -359,7 +361,7 @@ struct FromMatrixLanes {
       }
       // Phi^-1(Method2::in(a)) = normalized(a), then MAT-2's sign (canonical_sign).
       const S an2 = a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3;
-      good = good & runtime::is_ordinary_square_lane(an2);
+      good = good & Flag(runtime::is_ordinary_square_lane(an2));
       const S an = std::sqrt(an2);
       const S o0 = a0 / an, o1 = a1 / an, o2 = a2 / an, o3 = a3 / an;
       const S first = o0 != 0 ? o0 : (o1 != 0 ? o1 : o2);
@@ -368,7 +370,7 @@ struct FromMatrixLanes {
       out[1][l] = flip ? -o1 : o1;
       out[2][l] = flip ? -o2 : o2;
       out[3][l] = flip ? -o3 : o3;
-      ok[l] = Flag(good);
+      ok[l] = good;
     }
   }
 };
