@@ -1,4 +1,4 @@
-// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, MAT-1, MAT-2, AXANG-1..4, LOG-1, EXP-1,
+// NORM-1, COMPOSE-1, INV-1, APPLY-1, APPLY-2, APPLY-3, MAT-1, MAT-2, AXANG-1..4, LOG-1, EXP-1,
 // NLERP-1, SLERP-2, QLB-1 and SKIN-1 of RotorOps<S, Method2>
 // (rotor3.hpp) for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast paths of rotor_m2's batch
 // functions for ordinary input, kept apart from the scalar math in the manner of ozz-animation's
@@ -130,6 +130,25 @@ struct ApplyVectorLanes {
       ok[l] = Flag(ordinary_q & finite_v);
       const impl::Vec3<S> y = sandwich_vector(unit_rotor_lane(x, l, std::sqrt(n2)), impl::Vec3<S>{p[0][l], p[1][l], p[2][l]});
       for (std::size_t c = 0; c < 3; ++c) out[c][l] = y[c];
+    }
+  }
+};
+
+/// APPLY-3 as RotorOps::apply_trivector computes it where |q|^2 is ordinary (q a rotation) and a
+/// is finite: R (a I) ~R = a I, so the output is a itself.
+template <class S, std::size_t L>
+struct ApplyTrivectorLanes {
+  S out[1][L];
+  Flag ok[L];
+
+  void run(const S* q, const S* a) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    S x[4][L];
+    load_lanes(q, x);
+    for (std::size_t l = 0; l < L; ++l) {
+      const S al = a[l];
+      ok[l] = Flag(runtime::is_ordinary_square_lane(norm2_lane(x, l)) & (al <= kMax) & (al >= -kMax));
+      out[0][l] = al;
     }
   }
 };

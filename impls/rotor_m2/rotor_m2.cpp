@@ -3,7 +3,7 @@
 // every operation in Cl(3,0) (impls/rotor/rotor3.hpp) and the quaternion read back by Phi^-1.
 // The same code as rotor_m1 except this conversion.
 //
-// Every batch but sqrt, apply_trivector and blend_log runs its ordinary elements in SIMD lanes
+// Every batch but sqrt and blend_log runs its ordinary elements in SIMD lanes
 // (rotor/rotor_lanes.hpp: RotorOps' operations in RotorOps' order, so the same bits; the libm
 // calls of the angle, log, exp and slerp lanes are RotorOps' own, made one lane at a time) and
 // every other element, and the last n mod 4, through RotorOps, which scales only where it must.
@@ -52,6 +52,11 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   ROTORCERT_TARGET_CLONES_FLAT static int apply_bivector_batch(std::size_t n, const S* q, const S* b, S* out,
                                                               std::uint8_t* status) {
     return runtime::lanes_or_element<lanes::ApplyVectorLanes, &Base::apply_bivector, 4, 3, 3>(n, q, b, out, status);
+  }
+  /// APPLY-3 batches: the checks in lanes, the output the input.
+  ROTORCERT_TARGET_CLONES_FLAT static int apply_trivector_batch(std::size_t n, const S* q, const S* a, S* out,
+                                                               std::uint8_t* status) {
+    return runtime::lanes_or_element<lanes::ApplyTrivectorLanes, &Base::apply_trivector, 4, 1, 1>(n, q, a, out, status);
   }
   /// INV-1 batches.
   ROTORCERT_TARGET_CLONES_FLAT static int inverse_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {

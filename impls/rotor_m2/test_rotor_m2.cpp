@@ -78,6 +78,7 @@ TEST(RotorM2, BatchLanesGiveTheElementFunctionsBits) {
   RC_CLAUSE("APPLY-1");
   RC_CLAUSE("INV-1");
   RC_CLAUSE("APPLY-2");
+  RC_CLAUSE("APPLY-3");
   RC_CLAUSE("MAT-1");
   RC_CLAUSE("NLERP-1");
   RC_CLAUSE("EDGE-3");

@@ -18,7 +18,7 @@
 
 namespace rotorcert::testing::quat_batch_laws {
 
-/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, MAT-1, MAT-2, AXANG-1, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1, SKIN-1 and (ops3)
+/// NORM-1, COMPOSE-1, APPLY-1 and, where the table has them, INV-1, APPLY-2, APPLY-3, MAT-1, MAT-2, AXANG-1, AXANG-2, LOG-1, EXP-1, NLERP-1, SLERP-2, QLB-1, SKIN-1 and (ops3)
 /// AXANG-3, AXANG-4, EDGE-3, EDGE-5..8: a batch that runs its ordinary elements in SIMD lanes
 /// (rotor_m2, dq) must give, bit for bit and status for status, what the element function
 /// gives for each element alone (a one-element call takes the element function). 61
@@ -77,6 +77,12 @@ void batch_gives_the_element_bits(const impl::Ops<S>& ops, const impl::Ops3<S>* 
   if (ops.apply_bivector != nullptr)
     check("apply_bivector", 3, [&](std::size_t n, std::size_t i, S* o, Status s) {
       return ops.apply_bivector(n, &a[4 * i], &v[3 * i], o, s);
+    });
+  if (ops.apply_trivector != nullptr)  // the vectors' x as the trivector's coefficient (Inf among them)
+    check("apply_trivector", 1, [&](std::size_t n, std::size_t i, S* o, Status s) {
+      std::vector<S> coefficient(n);
+      for (std::size_t e = 0; e < n; ++e) coefficient[e] = v[3 * (i + e) + 2];
+      return ops.apply_trivector(n, &a[4 * i], coefficient.data(), o, s);
     });
   if (ops.to_matrix != nullptr)
     check("to_matrix", 9, [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.to_matrix(n, &a[4 * i], o, s); });
