@@ -25,6 +25,7 @@
 #include <limits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/lane_store.hpp>
 #include <rotorcert/runtime/lane_weights.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
 
@@ -120,14 +121,7 @@ struct BlendLanes {
     for (std::size_t l = 0; l < L; ++l) {
       S u[8];
       ok[l] = ok[l] & Flag(normalized_lane(sum, l, u));
-      out[0][l] = u[0];
-      out[1][l] = u[1];
-      out[2][l] = u[2];
-      out[3][l] = u[3];
-      out[4][l] = u[4];
-      out[5][l] = u[5];
-      out[6][l] = u[6];
-      out[7][l] = u[7];
+      runtime::store_lane(u, l, out);
     }
   }
 };

@@ -52,16 +52,22 @@ template <class S, std::size_t L>
   return {x[3][l] / n, -(x[0][l] / n), -(x[1][l] / n), -(x[2][l] / n)};
 }
 
+/// Phi^-1(r) = (-e23, -e31, -e12, s) into lane l of out.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline void readout_lane(const Rotor3<S>& r, std::size_t l, S (&out)[4][L]) {
+  out[0][l] = -r.e23;
+  out[1][l] = -r.e31;
+  out[2][l] = -r.e12;
+  out[3][l] = r.s;
+}
+
 /// Phi^-1(normalized(r)) into lane l of out where |r|^2 is ordinary; returns whether it is.
 /// normalized(Rotor3) divides the quaternion (e23, e31, e12, s) by its norm, in that order.
 template <class S, std::size_t L>
 [[gnu::always_inline]] inline bool normalized_readout_lane(const Rotor3<S>& r, std::size_t l, S (&out)[4][L]) {
   const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12 + r.s * r.s;
   const S n = std::sqrt(n2);
-  out[0][l] = -(r.e23 / n);
-  out[1][l] = -(r.e31 / n);
-  out[2][l] = -(r.e12 / n);
-  out[3][l] = r.s / n;
+  readout_lane(Rotor3<S>{r.s / n, r.e23 / n, r.e31 / n, r.e12 / n}, l, out);
   return runtime::is_ordinary_square_lane(n2);
 }
 
@@ -101,11 +107,7 @@ struct ComposeLanes {
       const bool ordinary_a = runtime::is_ordinary_square_lane(na), ordinary_b = runtime::is_ordinary_square_lane(nb);
       ok[l] = Flag(ordinary_a & ordinary_b);
       const Rotor3<S> p{x[3][l], -x[0][l], -x[1][l], -x[2][l]}, q{y[3][l], -y[0][l], -y[1][l], -y[2][l]};
-      const Rotor3<S> r = gp(p, q);
-      out[0][l] = -r.e23;
-      out[1][l] = -r.e31;
-      out[2][l] = -r.e12;
-      out[3][l] = r.s;
+      readout_lane(gp(p, q), l, out);
     }
   }
 };
@@ -460,11 +462,7 @@ struct SlerpLanes {
     for (std::size_t l = 0; l < L; ++l) {
       const S sinc = small[l] != 0 ? sinc_series[l] : sn[l] / m[l];
       const Rotor3<S> ex{cs[l], sinc * e[0][l], sinc * e[1][l], sinc * e[2][l]};
-      const Rotor3<S> r = gp(ex, Rotor3<S>{ra[0][l], ra[1][l], ra[2][l], ra[3][l]});
-      out[0][l] = -r.e23;
-      out[1][l] = -r.e31;
-      out[2][l] = -r.e12;
-      out[3][l] = r.s;
+      readout_lane(gp(ex, Rotor3<S>{ra[0][l], ra[1][l], ra[2][l], ra[3][l]}), l, out);
     }
   }
 };
