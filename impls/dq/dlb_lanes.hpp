@@ -1,18 +1,21 @@
-// DQ-6 (DLB), DQ-3, DQ-4, DQ-2 and DQ-1 for L elements of a batch at once, in SoA lanes that the
-// compiler turns into SIMD: the fast paths of dq.cpp's dq_blend_batch, dq_apply_point_batch,
-// dq_normalize_batch, dq_compose_batch and dq_from_rotation_translation_batch for ordinary input,
+// DQ-6 (DLB), DQ-3, DQ-4, DQ-2, DQ-1, SKIN-2, SKIN-1 and AXIS-1 for L elements of a batch at once,
+// in SoA lanes that the compiler turns into SIMD: the fast paths of dq.cpp's dq_blend_batch,
+// dq_apply_point_batch, dq_normalize_batch, dq_compose_batch, dq_from_rotation_translation_batch,
+// skin_dual_quaternion_batch, skin_linear_batch and rotate_about_axis_batch for ordinary input,
 // kept apart from the scalar math (dq.cpp) in the manner of ozz-animation's SoA jobs.
 //
 // Data: the ABI's AoS arrays in (element e: k influences of [real xyzw, dual xyzw] at
 // d + 8 k e, k weights at w + k e) are copied influence by influence into lane arrays
 // x[component][lane], component 0..3 the real part's x, y, z, w and 4..7 the dual part's, or (the
 // kernels of dq_normalize, dq_compose and dq_from_rotation_translation) read in place in the loop
-// over lanes; outputs go to out[component][lane].
+// over lanes; the skinning kernels copy rotations q + 4 k e and translations t + 3 k e influence by
+// influence the same way; outputs go to out[component][lane].
 //
 // Every lane computes exactly what dq.cpp's element path computes for its element (dlb_ordinary(),
-// normalized_ordinary(), the Dual product, apply_point(), from_rotation_translation()): the same
-// IEEE operations (+, -, *, /, sqrt, each correctly rounded, in SIMD as in scalar code) in the
-// same order, so the same bits. Where dq.cpp would leave that path (a cheap test fails), the
+// normalized_ordinary(), the Dual product, apply_point(), from_rotation_translation(), dlb(),
+// skin_linear(), rotate_about_axis()): the same IEEE operations (+, -, *, /, sqrt, each correctly
+// rounded, in SIMD as in scalar code) in the same order, so the same bits; AXIS-1's sin and cos are
+// the element function's libm calls, made lane by lane between the vectorised loops. Where dq.cpp would leave that path (a cheap test fails), the
 // lane's `ok` is false and the caller takes the checked path for that element; the lane's
 // other values are then meaningless (they may be NaN or inf: no trap, no errno, see
 // CMakeLists.txt: -fno-math-errno lets sqrt vectorise, -ffp-contract=off keeps a * b + c two
@@ -110,6 +113,25 @@ struct DlbLanes {
   }
 };
 
+/// dq.cpp's rotate(u_r, p) + translation(u) of the dual quaternion u = (u_r, u_d) (DQ-3 on a
+/// unit one, AXIS-1's last step) into lane l of out, term by term in their order.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline void moved_point_lane(const S (&u)[8], S px, S py, S pz, std::size_t l, S (&out)[3][L]) {
+  const S ux = u[0], uy = u[1], uz = u[2], uw = u[3], dx = u[4], dy = u[5], dz = u[6], dw = u[7];
+  // rotate(): t = 2 (u x p), p + w t + u x t.
+  const S tx = S(2) * (uy * pz - uz * py), ty = S(2) * (uz * px - ux * pz), tz = S(2) * (ux * py - uy * px);
+  const S rx = px + uw * tx + (uy * tz - uz * ty);
+  const S ry = py + uw * ty + (uz * tx - ux * tz);
+  const S rz = pz + uw * tz + (ux * ty - uy * tx);
+  // translation(): 2 (r_w d_v - d_w r_v + r_v x d_v).
+  const S sx = S(2) * (uw * dx - dw * ux + (uy * dz - uz * dy));
+  const S sy = S(2) * (uw * dy - dw * uy + (uz * dx - ux * dz));
+  const S sz = S(2) * (uw * dz - dw * uz + (ux * dy - uy * dx));
+  out[0][l] = rx + sx;
+  out[1][l] = ry + sy;
+  out[2][l] = rz + sz;
+}
+
 /// DQ-3 for L elements of a dq_apply_point batch at once: dq.cpp's apply_point() (divide both
 /// parts by |r|, rotate, add the translation) on elements whose |r|^2 is ordinary and |d|^2
 /// ordinary or 0 (then safely_scaled() is the identity and every component is finite) and whose
@@ -135,21 +157,9 @@ struct ApplyPointLanes {
       const bool finite_point = runtime::finite3_lane(v[0][l], v[1][l], v[2][l]);
       ok[l] = Flag((r2 >= kLo) & (r2 <= kHi) & ((d2 == 0) | ((d2 >= kLo) & (d2 <= kHi))) & finite_point);
       const S n = std::sqrt(r2);
-      const S ux = x[0][l] / n, uy = x[1][l] / n, uz = x[2][l] / n, uw = x[3][l] / n;
-      const S dx = x[4][l] / n, dy = x[5][l] / n, dz = x[6][l] / n, dw = x[7][l] / n;
-      const S px = v[0][l], py = v[1][l], pz = v[2][l];
-      // rotate(): t = 2 (u x p), p + w t + u x t.
-      const S tx = S(2) * (uy * pz - uz * py), ty = S(2) * (uz * px - ux * pz), tz = S(2) * (ux * py - uy * px);
-      const S rx = px + uw * tx + (uy * tz - uz * ty);
-      const S ry = py + uw * ty + (uz * tx - ux * tz);
-      const S rz = pz + uw * tz + (ux * ty - uy * tx);
-      // translation(): 2 (r_w d_v - d_w r_v + r_v x d_v).
-      const S sx = S(2) * (uw * dx - dw * ux + (uy * dz - uz * dy));
-      const S sy = S(2) * (uw * dy - dw * uy + (uz * dx - ux * dz));
-      const S sz = S(2) * (uw * dz - dw * uz + (ux * dy - uy * dx));
-      out[0][l] = rx + sx;
-      out[1][l] = ry + sy;
-      out[2][l] = rz + sz;
+      const S u[8] = {x[0][l] / n, x[1][l] / n, x[2][l] / n, x[3][l] / n,
+                      x[4][l] / n, x[5][l] / n, x[6][l] / n, x[7][l] / n};
+      moved_point_lane(u, v[0][l], v[1][l], v[2][l], l, out);
     }
   }
 };
@@ -272,6 +282,207 @@ struct FromRotationTranslationLanes {
       out[5][l] = S(0.5) * (uw * ty + (tz * ux - tx * uz));
       out[6][l] = S(0.5) * (uw * tz + (tx * uy - ty * ux));
       out[7][l] = S(-0.5) * (tx * ux + ty * uy + tz * uz);
+    }
+  }
+};
+
+/// The unit dual quaternion of dq.cpp's from_rotation_translation(q / |q|, t) (DQ-1) into u, for a
+/// quaternion whose n2 = |q|^2 is ordinary (normalized() then divides by its sqrt unscaled): the
+/// operations of FromRotationTranslationLanes.
+template <class S>
+[[gnu::always_inline]] inline void rigid_lane(S qx, S qy, S qz, S qw, S n2, S tx, S ty, S tz, S (&u)[8]) {
+  const S n = std::sqrt(n2);
+  const S ux = qx / n, uy = qy / n, uz = qz / n, uw = qw / n;
+  u[0] = ux;
+  u[1] = uy;
+  u[2] = uz;
+  u[3] = uw;
+  u[4] = S(0.5) * (uw * tx + (ty * uz - tz * uy));
+  u[5] = S(0.5) * (uw * ty + (tz * ux - tx * uz));
+  u[6] = S(0.5) * (uw * tz + (tx * uy - ty * ux));
+  u[7] = S(-0.5) * (tx * ux + ty * uy + tz * uz);
+}
+
+/// SKIN-2 for L elements of a skin_dual_quaternion batch: dq.cpp's Dq::skin_dual_quaternion()
+/// (DQ-1 of each influence, dlb() against the pivot, DQ-3 of the vertex) where the weights pass
+/// EDGE-9's tests (runtime::LaneWeights), the vertex and every translation are finite, every
+/// |q_i|^2 is ordinary, the filter decides every hemisphere sign (EDGE-3) and the sum's DQ-4 takes
+/// normalized_ordinary(). Data: element e's k rotations at q + 4 k e, translations at t + 3 k e,
+/// weights at w + k e, vertex at v + 3 e (the ABI arrays).
+template <class S, std::size_t L>
+struct SkinDualQuaternionLanes {
+  using Flag = std::int32_t;
+
+  S out[3][L];  // the skinned vertex, where ok
+  Flag ok[L];
+
+  void run(std::size_t k, const S* q, const S* t, const S* w, const S* v) {
+    runtime::LaneWeights<S, L> weights;  // EDGE-9
+    weights.scan(k, w);
+    S pivot[4][L], sum[8][L], p[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      const std::size_t at = weights.pivot_offset(k, 4, l);
+      for (std::size_t c = 0; c < 4; ++c) pivot[c][l] = q[at + c];
+      for (std::size_t c = 0; c < 3; ++c) p[c][l] = v[3 * l + c];
+      for (std::size_t c = 0; c < 8; ++c) sum[c][l] = 0;
+    }
+    for (std::size_t l = 0; l < L; ++l) ok[l] = weights.ok[l] & Flag(runtime::finite3_lane(p[0][l], p[1][l], p[2][l]));
+    S x[4][L], tr[3][L];
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l) {
+        for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * k * l + 4 * i + c];
+        for (std::size_t c = 0; c < 3; ++c) tr[c][l] = t[3 * k * l + 3 * i + c];
+      }
+      for (std::size_t l = 0; l < L; ++l) {
+        const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+        const bool ordinary = runtime::is_ordinary_square_lane(n2);
+        const bool finite_t = runtime::finite3_lane(tr[0][l], tr[1][l], tr[2][l]);
+        S u[8];
+        rigid_lane(x[0][l], x[1][l], x[2][l], x[3][l], n2, tr[0][l], tr[1][l], tr[2][l], u);
+        // dlb()'s hemisphere_dot(q_i, q_p) by the filter of runtime::filtered_dot_sign<S, 4>,
+        // undecided -> not ok (the exact sum is the checked path's).
+        bool negative;
+        const bool decided = runtime::filtered_dot4_lane(x[0][l], x[1][l], x[2][l], x[3][l], pivot[0][l], pivot[1][l],
+                                                         pivot[2][l], pivot[3][l], negative);
+        const S f0 = w[k * l + i] / weights.w_max[l];
+        const S f = negative ? -f0 : f0;
+        sum[0][l] = sum[0][l] + f * u[0];  // written out: a loop over c here keeps l's loop scalar
+        sum[1][l] = sum[1][l] + f * u[1];
+        sum[2][l] = sum[2][l] + f * u[2];
+        sum[3][l] = sum[3][l] + f * u[3];
+        sum[4][l] = sum[4][l] + f * u[4];
+        sum[5][l] = sum[5][l] + f * u[5];
+        sum[6][l] = sum[6][l] + f * u[6];
+        sum[7][l] = sum[7][l] + f * u[7];
+        ok[l] = ok[l] & Flag(ordinary & finite_t & decided);
+      }
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S s[8] = {sum[0][l], sum[1][l], sum[2][l], sum[3][l], sum[4][l], sum[5][l], sum[6][l], sum[7][l]};
+      S u[8];
+      ok[l] = ok[l] & Flag(normalized_lane(s, u));  // DQ-4 of the sum
+      moved_point_lane(u, p[0][l], p[1][l], p[2][l], l, out);
+    }
+  }
+};
+
+/// SKIN-1 for L elements of a skin_linear batch: dq.cpp's Dq::skin_linear() (the sum of
+/// (w_i / w_max) MAT-1(q_i / |q_i|) and of (w_i / w_max) t_i, applied to v, divided by the sum of
+/// the w_i / w_max) where the weights pass EDGE-9's tests, the vertex and every translation are
+/// finite and every |q_i|^2 is ordinary. Data as SkinDualQuaternionLanes.
+template <class S, std::size_t L>
+struct SkinLinearLanes {
+  using Flag = std::int32_t;
+
+  S out[3][L];  // the skinned vertex, where ok
+  Flag ok[L];
+
+  void run(std::size_t k, const S* q, const S* t, const S* w, const S* v) {
+    runtime::LaneWeights<S, L> weights;  // EDGE-9
+    weights.scan(k, w);
+    S m[9][L], tsum[3][L], total[L], p[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      for (std::size_t c = 0; c < 3; ++c) p[c][l] = v[3 * l + c];
+      for (std::size_t c = 0; c < 9; ++c) m[c][l] = 0;
+      for (std::size_t c = 0; c < 3; ++c) tsum[c][l] = 0;
+      total[l] = 0;
+    }
+    for (std::size_t l = 0; l < L; ++l) ok[l] = weights.ok[l] & Flag(runtime::finite3_lane(p[0][l], p[1][l], p[2][l]));
+    S x[4][L], tr[3][L];
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l) {
+        for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * k * l + 4 * i + c];
+        for (std::size_t c = 0; c < 3; ++c) tr[c][l] = t[3 * k * l + 3 * i + c];
+      }
+      for (std::size_t l = 0; l < L; ++l) {
+        const S n2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l] + x[3][l] * x[3][l];
+        const bool ordinary = runtime::is_ordinary_square_lane(n2);
+        const bool finite_t = runtime::finite3_lane(tr[0][l], tr[1][l], tr[2][l]);
+        ok[l] = ok[l] & Flag(ordinary & finite_t);
+        const S f = w[k * l + i] / weights.w_max[l];
+        const S n = std::sqrt(n2);
+        const S rx = x[0][l] / n, ry = x[1][l] / n, rz = x[2][l] / n, rw = x[3][l] / n;
+        const S xx = rx * rx, yy = ry * ry, zz = rz * rz, xy = rx * ry, xz = rx * rz, yz = ry * rz;
+        const S wx = rw * rx, wy = rw * ry, wz = rw * rz;
+        m[0][l] = m[0][l] + f * (S(1) - S(2) * (yy + zz));
+        m[1][l] = m[1][l] + f * (S(2) * (xy + wz));
+        m[2][l] = m[2][l] + f * (S(2) * (xz - wy));
+        m[3][l] = m[3][l] + f * (S(2) * (xy - wz));
+        m[4][l] = m[4][l] + f * (S(1) - S(2) * (xx + zz));
+        m[5][l] = m[5][l] + f * (S(2) * (yz + wx));
+        m[6][l] = m[6][l] + f * (S(2) * (xz + wy));
+        m[7][l] = m[7][l] + f * (S(2) * (yz - wx));
+        m[8][l] = m[8][l] + f * (S(1) - S(2) * (xx + yy));
+        tsum[0][l] = tsum[0][l] + f * tr[0][l];
+        tsum[1][l] = tsum[1][l] + f * tr[1][l];
+        tsum[2][l] = tsum[2][l] + f * tr[2][l];
+        total[l] = total[l] + f;
+      }
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S vx = p[0][l], vy = p[1][l], vz = p[2][l];
+      const S mvx = m[0][l] * vx + m[3][l] * vy + m[6][l] * vz;
+      const S mvy = m[1][l] * vx + m[4][l] * vy + m[7][l] * vz;
+      const S mvz = m[2][l] * vx + m[5][l] * vy + m[8][l] * vz;
+      const S inv = S(1) / total[l];
+      out[0][l] = inv * (mvx + tsum[0][l]);
+      out[1][l] = inv * (mvy + tsum[1][l]);
+      out[2][l] = inv * (mvz + tsum[2][l]);
+    }
+  }
+};
+
+/// AXIS-1 for L elements of a rotate_about_axis batch: dq.cpp's Dq::rotate_about_axis() (q = (sin
+/// h u/|u|, cos h) with h = angle / 2, sigma = (q, 1/2 (c q - q c)), DQ-3 of the point) where the
+/// centre, angle and point are finite and |u|^2 is ordinary (normalized() then divides by its
+/// sqrt unscaled; u is finite and nonzero). Data: element e's centre at c + 3 e, axis at u + 3 e,
+/// angle at angle + e, point at p + 3 e (the ABI arrays).
+template <class S, std::size_t L>
+struct RotateAboutAxisLanes {
+  using Flag = std::int32_t;
+
+  S out[3][L];  // the moved point, where ok
+  Flag ok[L];
+
+  void run(const S* c, const S* u, const S* angle, const S* p) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    // Copied into lane arrays first: read in place, this loop does not vectorise (GCC 12).
+    S uu[3][L], cc[3][L], pp[3][L], ang[L], half[L], axis[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      for (std::size_t j = 0; j < 3; ++j) uu[j][l] = u[3 * l + j], cc[j][l] = c[3 * l + j], pp[j][l] = p[3 * l + j];
+      ang[l] = angle[l];
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S ux = uu[0][l], uy = uu[1][l], uz = uu[2][l], a = ang[l];
+      const S n2 = ux * ux + uy * uy + uz * uz + S(0) * S(0);  // dot() of the quaternion (u, 0)
+      const bool ordinary = runtime::is_ordinary_square_lane(n2);
+      const bool finite_c = runtime::finite3_lane(cc[0][l], cc[1][l], cc[2][l]);
+      const bool finite_p = runtime::finite3_lane(pp[0][l], pp[1][l], pp[2][l]);
+      const bool finite_a = (a <= kMax) & (a >= -kMax);
+      ok[l] = Flag(ordinary & finite_c & finite_p & finite_a);
+      const S n = std::sqrt(n2);
+      axis[0][l] = ux / n;
+      axis[1][l] = uy / n;
+      axis[2][l] = uz / n;  // (its w, 0 / n, is not used)
+      half[l] = a / S(2);
+    }
+    // The element function's own libm calls, lane by lane (no vector sin or cos gives its bits), on
+    // 0 where the lane is not ok, so that they see no Inf or NaN (no errno, no FE_INVALID); the
+    // select sits here, as a select on a lane flag in the loop above keeps it from vectorising.
+    S sn[L], cs[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S h = ok[l] != 0 ? half[l] : S(0);
+      sn[l] = std::sin(h), cs[l] = std::cos(h);
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S qx = sn[l] * axis[0][l], qy = sn[l] * axis[1][l], qz = sn[l] * axis[2][l], qw = cs[l];
+      const S cx = cc[0][l], cy = cc[1][l], cz = cc[2][l];
+      // c q - q c of the pure quaternion c, every product term included (signed zeros as dq.cpp's).
+      S ax, ay, az, aw, bx, by, bz, bw;
+      product_lane(cx, cy, cz, S(0), qx, qy, qz, qw, ax, ay, az, aw);
+      product_lane(qx, qy, qz, qw, cx, cy, cz, S(0), bx, by, bz, bw);
+      const S sigma[8] = {qx, qy, qz, qw, S(0.5) * (ax - bx), S(0.5) * (ay - by), S(0.5) * (az - bz), S(0.5) * (aw - bw)};
+      moved_point_lane(sigma, pp[0][l], pp[1][l], pp[2][l], l, out);
     }
   }
 };

@@ -13,9 +13,10 @@
 // that no scaling is needed (runtime/ordinary_range.hpp), the same formula runs unscaled.
 //
 // Batches: the ordinary elements of dq_from_rotation_translation, dq_compose, dq_normalize,
-// dq_apply_point and dq_blend (dlb_lanes.hpp), and of normalize, compose and apply_vector (the
-// QuatLanes below), run in SIMD lanes with the element function's bits; every other element takes
-// the checked element function (dq_blend's first tries the inline dlb_ordinary()).
+// dq_apply_point, dq_blend, skin_dual_quaternion, skin_linear and rotate_about_axis
+// (dlb_lanes.hpp), and of normalize, compose, inverse and apply_vector (the QuatLanes below), run
+// in SIMD lanes with the element function's bits; every other element takes the checked element
+// function (dq_blend's first tries the inline dlb_ordinary()).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -390,7 +391,7 @@ S skin_input_ok(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t
 
 // ---- SoA lanes of the quaternion ops ----------------------------------------------------------------
 //
-// NORM-1, COMPOSE-1 and APPLY-1 for L elements at once (runtime/lane_blocks.hpp runs them): each
+// NORM-1, COMPOSE-1, INV-1 and APPLY-1 for L elements at once (runtime/lane_blocks.hpp runs them): each
 // lane calls the functions above that the element functions call (operator/, operator*, rotate) on
 // its element, with the element functions' ordinary-case operations, so the same bits; no branch
 // depends on a lane, so the loops vectorise. A lane whose |q|^2 is not ordinary (which includes
@@ -463,6 +464,22 @@ struct ApplyVectorLanes : QuatLanes<S, L> {
   }
 };
 
+/// INV-1: conj(q) / (q.q), inverse()'s ordinary case; q read in place (as dlb_lanes.hpp's
+/// normalized_lane() does: faster than load_quats() here).
+template <class S, std::size_t L>
+struct InverseLanes : QuatLanes<S, L> {
+  S out[4][L];
+  void run(const S* q, const S* /*unused*/) {
+    for (std::size_t l = 0; l < L; ++l) {
+      const Quat<S> a{q[4 * l], q[4 * l + 1], q[4 * l + 2], q[4 * l + 3]};
+      const S n2 = dot(a, a);
+      this->ok[l] = runtime::is_ordinary_square_lane(n2);
+      const Quat<S> r = conj(a) / n2;
+      out[0][l] = r.x, out[1][l] = r.y, out[2][l] = r.z, out[3][l] = r.w;
+    }
+  }
+};
+
 // ---- the implementation ----------------------------------------------------------------------------
 
 template <class S>
@@ -520,15 +537,18 @@ struct Dq {
     return Status::ok;
   }
 
-  /// The batches of normalize, compose and apply_vector: SIMD lanes (QuatLanes above: the same
-  /// bits) in blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements, by
-  /// the element function.
+  /// The batches of normalize, compose, inverse and apply_vector: SIMD lanes (QuatLanes above: the
+  /// same bits) in blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements,
+  /// by the element function.
   ROTORCERT_TARGET_CLONES_FLAT static int normalize_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
     return runtime::lanes_or_element<NormalizeLanes, &Dq::normalize, 4, 4>(n, q, out, status);
   }
   ROTORCERT_TARGET_CLONES_FLAT static int compose_batch(std::size_t n, const S* a, const S* b, S* out,
                                                        std::uint8_t* status) {
     return runtime::lanes_or_element<ComposeLanes, &Dq::compose, 4, 4, 4>(n, a, b, out, status);
+  }
+  ROTORCERT_TARGET_CLONES_FLAT static int inverse_batch(std::size_t n, const S* q, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<InverseLanes, &Dq::inverse, 4, 4>(n, q, out, status);
   }
   ROTORCERT_TARGET_CLONES_FLAT static int apply_vector_batch(std::size_t n, const S* q, const S* v, S* out,
                                                             std::uint8_t* status) {
@@ -714,6 +734,15 @@ struct Dq {
     return Status::ok;
   }
 
+  /// The batch of rotate_about_axis: SIMD lanes (dlb_lanes.hpp RotateAboutAxisLanes: the same
+  /// bits) in blocks of 16, then of 4; a lane that is not ok, and the last n mod 4 elements, by
+  /// the checked function above.
+  ROTORCERT_TARGET_CLONES_FLAT static int rotate_about_axis_batch(std::size_t n, const S* c, const S* u, const S* angle,
+                                                                 const S* p, S* out, std::uint8_t* status) {
+    return runtime::lanes_or_element<rotorcert::dq_lanes::RotateAboutAxisLanes, &Dq::rotate_about_axis, 3, 3, 3, 3>(
+        n, c, u, angle, p, out, status);
+  }
+
   // -- Skinning ---------------------------------------------------------------------------------
 
   /// SKIN-1: the blended matrix sum w_i M_i (MAT-1 of q_i/|q_i|) and translation sum w_i t_i,
@@ -744,6 +773,15 @@ struct Dq {
     return Status::ok;
   }
 
+  /// The batch of skin_linear. k <= kLaneInfluences: SIMD lanes (dlb_lanes.hpp SkinLinearLanes:
+  /// the same bits) in blocks of 16, then of 4; a lane that is not ok, the last n mod 4 elements
+  /// and every element of more influences by the checked function above.
+  ROTORCERT_TARGET_CLONES_FLAT static int skin_linear_batch(std::size_t n, std::size_t k, const S* q, const S* t,
+                                                           const S* w, const S* v, S* out, std::uint8_t* status) {
+    return runtime::skin_lanes_or_element<rotorcert::dq_lanes::SkinLinearLanes, &Dq::skin_linear, kLaneInfluences>(
+        n, k, q, t, w, v, out, status);
+  }
+
   /// SKIN-2: sigma_i = DQ-1(q_i, t_i) (unit by construction), DLB, DQ-3.
   static Status skin_dual_quaternion(std::span<const rci::Quat<S>> q, std::span<const rci::Vec3<S>> t,
                                      std::span<const S> w, const rci::Vec3<S>& v, rci::Vec3<S>& out) {
@@ -753,6 +791,16 @@ struct Dq {
     const Dual<S> sigma = dlb<S>(q.size(), [&](std::size_t i) { return load(q[i]); }, influence, w, w_max);
     out = store(rotate(sigma.r, load(v)) + translation(sigma));
     return Status::ok;
+  }
+
+  /// The batch of skin_dual_quaternion, as skin_linear_batch (dlb_lanes.hpp
+  /// SkinDualQuaternionLanes); a lane whose hemisphere sign the filter cannot decide (EDGE-3) or
+  /// whose blended sum is not ordinary goes to the checked function too.
+  ROTORCERT_TARGET_CLONES_FLAT static int skin_dual_quaternion_batch(std::size_t n, std::size_t k, const S* q,
+                                                                    const S* t, const S* w, const S* v, S* out,
+                                                                    std::uint8_t* status) {
+    return runtime::skin_lanes_or_element<rotorcert::dq_lanes::SkinDualQuaternionLanes, &Dq::skin_dual_quaternion,
+                                          kLaneInfluences>(n, k, q, t, w, v, out, status);
   }
 };
 

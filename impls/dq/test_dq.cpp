@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <span>
@@ -197,6 +198,55 @@ TEST(Dq, QuaternionBatchesGiveTheElementFunctionsBits) {
   RC_CLAUSE("EDGE-8");
   rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<float>(ops<float>());
   rotorcert::testing::quat_batch_laws::batch_gives_the_element_bits<double>(ops<double>());
+}
+
+/// INV-1's batch (SIMD lanes where |q|^2 is ordinary: dq.cpp InverseLanes) gives bit for bit and
+/// status for status what one-element calls give, on 61 elements (blocks of 16, of 4, one alone)
+/// with, spread over blocks and lanes, quaternions scaled by 2^+-E beyond the ordinary range, with
+/// components near the largest finite, zero and -0, subnormal, NaN and +-Inf (the quaternion batch
+/// law above sees fewer of these).
+TEST(Dq, InverseBatchGivesTheElementBits) {
+  RC_CLAUSE("INV-1");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("EDGE-8");
+  both([](auto tag) {
+    using S = decltype(tag);
+    using Lim = std::numeric_limits<S>;
+    constexpr int E = std::is_same_v<S, float> ? 40 : 300;
+    constexpr std::size_t kCases = 61;
+    Rng rng;
+    std::vector<S> q(4 * kCases);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      S* x = &q[4 * i];
+      const Q<S> r = rng.quat<S>();
+      for (std::size_t c = 0; c < 4; ++c) x[c] = r[c] * S(1 + i % 4);
+      switch ((7 * i) % 23) {
+        case 1: for (std::size_t c = 0; c < 4; ++c) x[c] = std::ldexp(x[c], E); break;
+        case 2: for (std::size_t c = 0; c < 4; ++c) x[c] = std::ldexp(x[c], -E); break;
+        case 3: x[1] = Lim::max(), x[2] = -Lim::max() / 2; break;
+        case 4: x[0] = x[1] = x[2] = x[3] = 0; break;
+        case 5: x[0] = -S(0), x[1] = 0, x[2] = -S(0), x[3] = -S(0); break;
+        case 6: x[0] = Lim::denorm_min(), x[1] = x[2] = x[3] = -S(0); break;
+        case 7: x[3] = Lim::quiet_NaN(); break;
+        case 8: x[0] = Lim::infinity(); break;
+        case 9: x[2] = -Lim::infinity(); break;
+        case 10: x[0] = x[1] = x[2] = 0; break;  // a scalar quaternion: conj keeps -0 signs
+        default: break;
+      }
+    }
+    std::vector<S> batch(4 * kCases);
+    std::vector<std::uint8_t> st(kCases, 9);
+    ASSERT_EQ(ops<S>().inverse(kCases, q.data(), batch.data(), st.data()), 0);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      S one[4];
+      std::uint8_t st1 = 9;
+      ASSERT_EQ(ops<S>().inverse(1, &q[4 * i], one, &st1), 0);
+      EXPECT_EQ(st[i], st1) << "element " << i;
+      EXPECT_EQ(0, std::memcmp(&batch[4 * i], one, sizeof one)) << "element " << i;
+    }
+  });
 }
 
 /// dq's quaternion ops of Core (its rigid ops: RigidLaws.SmokeAgainstReference).

@@ -1,8 +1,9 @@
 // MOTOR-5 (the blend of motors, DLB under MOTOR-1), the sandwich of a point, the normalisation
-// (DQ-4), the product (DQ-2 as MOTOR-3) and the motor T(t) R of a rotation and translation (DQ-1)
-// for L elements of a batch at once, in SoA lanes that the compiler turns into SIMD: the fast
-// paths of motor_pga.cpp's dq_blend_batch, dq_apply_point_batch, dq_normalize_batch,
-// dq_compose_batch and dq_from_rotation_translation_batch for ordinary input, kept apart from the
+// (DQ-4), the product (DQ-2 as MOTOR-3), the motor T(t) R of a rotation and translation (DQ-1),
+// SKIN-2 and AXIS-1 for L elements of a batch at once, in SoA lanes that the compiler turns into
+// SIMD: the fast paths of motor_pga.cpp's dq_blend_batch, dq_apply_point_batch,
+// dq_normalize_batch, dq_compose_batch, dq_from_rotation_translation_batch,
+// skin_dual_quaternion_batch and rotate_about_axis_batch for ordinary input, kept apart from the
 // scalar math (motor.hpp, motor_pga.cpp) in the manner of ozz-animation's SoA jobs.
 //
 // Data: the ABI's dual quaternions (element e: k influences of 8 scalars at d + 8 k e, k weights
@@ -12,8 +13,9 @@
 // motors go back through MOTOR-1 (pga::to_dual_quaternion) into out[component][lane].
 //
 // Every lane computes what the scalar fast path computes for its element (motor_pga.cpp's
-// blend_ordinary(), pga::normalized_ordinary(), pga::sandwich(), pga::operator*()): the same IEEE
-// operations in the same order, so the same bits. Where a cheap test fails, the lane's `ok` is 0
+// blend_ordinary(), blend(), rigid(), pga::normalized_ordinary(), pga::sandwich(),
+// pga::operator*()): the same IEEE operations in the same order, so the same bits; AXIS-1's sin
+// and cos are the element function's libm calls, made lane by lane between the vectorised loops. Where a cheap test fails, the lane's `ok` is 0
 // and the caller takes the checked path for that element; the lane's other values are then
 // meaningless (NaN or inf, no trap: see CMakeLists.txt for the flags). No branch depends on a
 // lane's value.
@@ -126,6 +128,20 @@ struct BlendLanes {
   }
 };
 
+/// pga::sandwich() of the point (x0, x1, x2, 1) by the motor u, read back as motor_pga.cpp's
+/// move_point() does, into lane l of out.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline void sandwich_lane(const S (&u)[8], S x0, S x1, S x2, std::size_t l, S (&out)[3][L]) {
+  const S s = u[0], b0 = u[1], b1 = u[2], b2 = u[3], c0 = u[4], c1 = u[5], c2 = u[6], e0123 = u[7];
+  const S w0 = b1 * x2 - b2 * x1, w1 = b2 * x0 - b0 * x2, w2 = b0 * x1 - b1 * x0;       // b x x
+  const S bu0 = b1 * w2 - b2 * w1, bu1 = b2 * w0 - b0 * w2, bu2 = b0 * w1 - b1 * w0;  // b x (b x x)
+  const S bc0 = b1 * c2 - b2 * c1, bc1 = b2 * c0 - b0 * c2, bc2 = b0 * c1 - b1 * c0;  // b x c
+  const S two_w = S(2) * S(1);
+  out[0][l] = x0 - S(2) * s * w0 + S(2) * bu0 - two_w * (e0123 * b0 + s * c0 - bc0);
+  out[1][l] = x1 - S(2) * s * w1 + S(2) * bu1 - two_w * (e0123 * b1 + s * c1 - bc1);
+  out[2][l] = x2 - S(2) * s * w2 + S(2) * bu2 - two_w * (e0123 * b2 + s * c2 - bc2);
+}
+
 template <class S, std::size_t L>
 struct ApplyPointLanes {
   S out[3][L];  // the moved point, where ok
@@ -142,16 +158,7 @@ struct ApplyPointLanes {
       S u[8];
       const bool finite_point = runtime::finite3_lane(v[0][l], v[1][l], v[2][l]);
       ok[l] = Flag(normalized_lane(m, l, u)) & Flag(finite_point);
-      // pga::sandwich() of the point (x, y, z, 1).
-      const S s = u[0], b0 = u[1], b1 = u[2], b2 = u[3], c0 = u[4], c1 = u[5], c2 = u[6], e0123 = u[7];
-      const S x0 = v[0][l], x1 = v[1][l], x2 = v[2][l];
-      const S w0 = b1 * x2 - b2 * x1, w1 = b2 * x0 - b0 * x2, w2 = b0 * x1 - b1 * x0;       // b x x
-      const S bu0 = b1 * w2 - b2 * w1, bu1 = b2 * w0 - b0 * w2, bu2 = b0 * w1 - b1 * w0;  // b x (b x x)
-      const S bc0 = b1 * c2 - b2 * c1, bc1 = b2 * c0 - b0 * c2, bc2 = b0 * c1 - b1 * c0;  // b x c
-      const S two_w = S(2) * S(1);
-      out[0][l] = x0 - S(2) * s * w0 + S(2) * bu0 - two_w * (e0123 * b0 + s * c0 - bc0);
-      out[1][l] = x1 - S(2) * s * w1 + S(2) * bu1 - two_w * (e0123 * b1 + s * c1 - bc1);
-      out[2][l] = x2 - S(2) * s * w2 + S(2) * bu2 - two_w * (e0123 * b2 + s * c2 - bc2);
+      sandwich_lane(u, v[0][l], v[1][l], v[2][l], l, out);
     }
   }
 };
@@ -260,6 +267,138 @@ struct FromRotationTranslationLanes {
       S r[8];
       product_lane(translator, rotor, r);
       store_dual_quaternion(r, l, out);
+    }
+  }
+};
+
+/// motor_pga.cpp's rigid(q, t) = pga::translator(t) * unit_rotor(q) (DQ-1 as T(t) R) into r, for
+/// a quaternion whose n2 = |q|^2 is ordinary: FromRotationTranslationLanes' operations, the
+/// product in full.
+template <class S>
+[[gnu::always_inline]] inline void rigid_lane(S qx, S qy, S qz, S qw, S n2, S tx, S ty, S tz, S (&r)[8]) {
+  const S n = std::sqrt(n2);
+  const S rotor[8] = {qw / n, -(qx / n), -(qy / n), -(qz / n), S(0), S(0), S(0), S(0)};
+  const S translator[8] = {S(1), S(0), S(0), S(0), -tx / S(2), -ty / S(2), -tz / S(2), S(0)};
+  product_lane(translator, rotor, r);
+}
+
+/// SKIN-2 for L elements of a skin_dual_quaternion batch: motor_pga.cpp's
+/// MotorPga::skin_dual_quaternion() (the motors T(t_i) R_i blended by blend() against the pivot,
+/// MOTOR-5, then the sandwich of the vertex) where the weights pass EDGE-9's tests
+/// (runtime::LaneWeights), the vertex and every translation are finite, every |q_i|^2 is ordinary,
+/// the filter decides every hemisphere sign (EDGE-3) and the sum normalises by
+/// pga::normalized_ordinary(). Data: element e's k rotations at q + 4 k e, translations at
+/// t + 3 k e, weights at w + k e, vertex at v + 3 e (the ABI arrays).
+template <class S, std::size_t L>
+struct SkinDualQuaternionLanes {
+  S out[3][L];  // the skinned vertex, where ok
+  Flag ok[L];
+
+  void run(std::size_t k, const S* q, const S* t, const S* w, const S* v) {
+    runtime::LaneWeights<S, L> weights;  // EDGE-9
+    weights.scan(k, w);
+    S pivot[4][L], sum[8][L], p[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      // pga::rotor() of the pivot's quaternion as given: (s, e23, e31, e12) = (w, -x, -y, -z).
+      const S* x = q + weights.pivot_offset(k, 4, l);
+      pivot[0][l] = x[3];
+      pivot[1][l] = -x[0];
+      pivot[2][l] = -x[1];
+      pivot[3][l] = -x[2];
+      for (std::size_t c = 0; c < 3; ++c) p[c][l] = v[3 * l + c];
+      for (std::size_t c = 0; c < 8; ++c) sum[c][l] = 0;
+    }
+    for (std::size_t l = 0; l < L; ++l) ok[l] = weights.ok[l] & Flag(runtime::finite3_lane(p[0][l], p[1][l], p[2][l]));
+    S x[4][L], tr[3][L];
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t l = 0; l < L; ++l) {
+        for (std::size_t c = 0; c < 4; ++c) x[c][l] = q[4 * k * l + 4 * i + c];
+        for (std::size_t c = 0; c < 3; ++c) tr[c][l] = t[3 * k * l + 3 * i + c];
+      }
+      for (std::size_t l = 0; l < L; ++l) {
+        const S qx = x[0][l], qy = x[1][l], qz = x[2][l], qw = x[3][l];
+        const S n2 = qx * qx + qy * qy + qz * qz + qw * qw;  // unit_rotor()'s
+        const bool ordinary = runtime::is_ordinary_square_lane(n2);
+        const bool finite_t = runtime::finite3_lane(tr[0][l], tr[1][l], tr[2][l]);
+        S m[8];
+        rigid_lane(qx, qy, qz, qw, n2, tr[0][l], tr[1][l], tr[2][l], m);
+        // blend()'s hemisphere_dot(raw(i), raw(p)) on the rotors (w, -x, -y, -z) by the filter of
+        // runtime::filtered_dot_sign<S, 4>; undecided -> not ok.
+        bool negative;
+        const bool decided =
+            runtime::filtered_dot4_lane(qw, -qx, -qy, -qz, pivot[0][l], pivot[1][l], pivot[2][l], pivot[3][l], negative);
+        const S f0 = w[k * l + i] / weights.w_max[l];
+        const S f = negative ? -f0 : f0;
+        sum[0][l] = sum[0][l] + f * m[0];  // written out: a loop over c here keeps l's loop scalar
+        sum[1][l] = sum[1][l] + f * m[1];
+        sum[2][l] = sum[2][l] + f * m[2];
+        sum[3][l] = sum[3][l] + f * m[3];
+        sum[4][l] = sum[4][l] + f * m[4];
+        sum[5][l] = sum[5][l] + f * m[5];
+        sum[6][l] = sum[6][l] + f * m[6];
+        sum[7][l] = sum[7][l] + f * m[7];
+        ok[l] = ok[l] & Flag(ordinary & finite_t & decided);
+      }
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      S u[8];
+      ok[l] = ok[l] & Flag(normalized_lane(sum, l, u));
+      sandwich_lane(u, p[0][l], p[1][l], p[2][l], l, out);
+    }
+  }
+};
+
+/// AXIS-1 for L elements of a rotate_about_axis batch: motor_pga.cpp's MotorPga::rotate_about_axis()
+/// (the sandwich of the point by T_c R ~T_c, R = cos h + sin h (the rotor of u/|u|), h = angle / 2)
+/// where the centre, angle and point are finite and |u|^2 is ordinary (unit_rotor() then divides
+/// by its sqrt unscaled; u is finite and nonzero). Every product runs in full, zero coefficients
+/// included, so that the signs of zeros are the element path's. Data: element e's centre at
+/// c + 3 e, axis at u + 3 e, angle at angle + e, point at p + 3 e (the ABI arrays).
+template <class S, std::size_t L>
+struct RotateAboutAxisLanes {
+  S out[3][L];  // the moved point, where ok
+  Flag ok[L];
+
+  void run(const S* c, const S* u, const S* angle, const S* p) {
+    constexpr S kMax = std::numeric_limits<S>::max();
+    // Copied into lane arrays first: read in place, this loop does not vectorise (GCC 12).
+    S uu[3][L], cc[3][L], pp[3][L], ang[L], half[L], axis[3][L];
+    for (std::size_t l = 0; l < L; ++l) {
+      for (std::size_t j = 0; j < 3; ++j) uu[j][l] = u[3 * l + j], cc[j][l] = c[3 * l + j], pp[j][l] = p[3 * l + j];
+      ang[l] = angle[l];
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S ux = uu[0][l], uy = uu[1][l], uz = uu[2][l], a = ang[l];
+      const S n2 = ux * ux + uy * uy + uz * uz + S(0) * S(0);  // unit_rotor() of the quaternion (u, 0)
+      const bool ordinary = runtime::is_ordinary_square_lane(n2);
+      const bool finite_c = runtime::finite3_lane(cc[0][l], cc[1][l], cc[2][l]);
+      const bool finite_p = runtime::finite3_lane(pp[0][l], pp[1][l], pp[2][l]);
+      const bool finite_a = (a <= kMax) & (a >= -kMax);
+      ok[l] = Flag(ordinary & finite_c & finite_p & finite_a);
+      const S n = std::sqrt(n2);
+      axis[0][l] = -(ux / n);  // pga::rotor(): (e23, e31, e12) = -(x, y, z)
+      axis[1][l] = -(uy / n);
+      axis[2][l] = -(uz / n);
+      half[l] = a / S(2);
+    }
+    // The element function's own libm calls, lane by lane (no vector sin or cos gives its bits), on
+    // 0 where the lane is not ok, so that they see no Inf or NaN (no errno, no FE_INVALID); the
+    // select sits here, as a select on a lane flag in the loop above keeps it from vectorising.
+    S sn[L], cs[L];
+    for (std::size_t l = 0; l < L; ++l) {
+      const S h = ok[l] != 0 ? half[l] : S(0);
+      sn[l] = std::sin(h), cs[l] = std::cos(h);
+    }
+    for (std::size_t l = 0; l < L; ++l) {
+      const S r[8] = {cs[l], sn[l] * axis[0][l], sn[l] * axis[1][l], sn[l] * axis[2][l], S(0), S(0), S(0), S(0)};
+      const S cx = cc[0][l], cy = cc[1][l], cz = cc[2][l];
+      // pga::translator(c) and its pga::reverse().
+      const S tc[8] = {S(1), S(0), S(0), S(0), -cx / S(2), -cy / S(2), -cz / S(2), S(0)};
+      const S tc_reverse[8] = {tc[0], -tc[1], -tc[2], -tc[3], -tc[4], -tc[5], -tc[6], tc[7]};
+      S tr[8], m[8];
+      product_lane(tc, r, tr);
+      product_lane(tr, tc_reverse, m);
+      sandwich_lane(m, pp[0][l], pp[1][l], pp[2][l], l, out);
     }
   }
 };

@@ -143,6 +143,26 @@ TYPED_TEST_P(RigidLaws, DqBatchesGiveTheElementBits) {
   dq_batches_give_the_element_bits<double>(TypeParam::f64());
 }
 
+TYPED_TEST_P(RigidLaws, SkinBatchesGiveTheElementBits) {
+  RC_CLAUSE("SKIN-1");
+  RC_CLAUSE("SKIN-2");
+  RC_CLAUSE("EDGE-3");
+  RC_CLAUSE("EDGE-5");
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  RC_CLAUSE("EDGE-9");
+  skin_batches_give_the_element_bits<float>(TypeParam::f32());
+  skin_batches_give_the_element_bits<double>(TypeParam::f64());
+}
+
+TYPED_TEST_P(RigidLaws, AxisBatchGivesTheElementBits) {
+  RC_CLAUSE("AXIS-1");
+  RC_CLAUSE("EDGE-6");
+  RC_CLAUSE("EDGE-7");
+  axis_batch_gives_the_element_bits<float>(TypeParam::f32());
+  axis_batch_gives_the_element_bits<double>(TypeParam::f64());
+}
+
 /// The rigid ops against the reference (a smoke check: the systematic run is the suite's). A table
 /// that blends otherwise (motor_pga: MOTOR-5) names that clause in its own file's test.
 TYPED_TEST_P(RigidLaws, SmokeAgainstReference) {
@@ -161,6 +181,6 @@ REGISTER_TYPED_TEST_SUITE_P(RigidLaws, NormaliseMakesRealUnitAndDualOrthogonal, 
                             DqsKeepsTheRadiusOfATwistedVertex, IdentityInIdentityOut, OutsideTheDomainIsDomainErrorWithNaN,
                             BlendDoesNotFlipOnExactlyZeroDot, ApplyPointFastAndCheckedPathsAgree,
                             BlendFastAndCheckedPathsAgree, DqBatchesGiveTheElementBits,
-                            SmokeAgainstReference);
+                            SkinBatchesGiveTheElementBits, AxisBatchGivesTheElementBits, SmokeAgainstReference);
 
 }  // namespace rotorcert::testing::rigid_laws

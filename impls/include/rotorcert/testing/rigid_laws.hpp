@@ -1,4 +1,4 @@
-// Laws of the dual-quaternion ops (DQ-1 .. DQ-6, EDGE-1, EDGE-3, EDGE-5 .. EDGE-7, EDGE-9) that
+// Laws of the dual-quaternion ops (DQ-1 .. DQ-6, SKIN-1, SKIN-2, AXIS-1, EDGE-1, EDGE-3, EDGE-5 .. EDGE-9) that
 // every built-in table offering them must keep, written once for any table: dq and motor_pga run
 // the same checks through their ABI tables (impls/dq/test_dq.cpp, impls/motor_pga/test_motor_pga.cpp),
 // each test naming its clauses. Tolerances are the spec's eps class bars.
@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -524,6 +525,152 @@ template <class S> void dq_batches_give_the_element_bits(const Ops<S>& ops) {
         [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.dq_normalize(n, &a[8 * i], o, s); });
   check("dq_normalize of b",
         [&](std::size_t n, std::size_t i, S* o, Status s) { return ops.dq_normalize(n, &b[8 * i], o, s); });
+}
+
+/// The check of the batch laws below: `call(n, i, out, status)` runs the op on n elements from
+/// element i; the batch of all `cases` against one-element calls (the element function), `width`
+/// output scalars per element, bit for bit (NaN outputs included) and status for status.
+template <class S, class Call>
+void batch_matches_elements(const char* name, std::size_t cases, std::size_t width, Call call) {
+  std::vector<S> batch(width * cases), one(width);
+  std::vector<std::uint8_t> st(cases, 9);
+  std::uint8_t st1 = 9;
+  ASSERT_EQ(call(cases, std::size_t{0}, batch.data(), st.data()), 0) << name;
+  for (std::size_t i = 0; i < cases; ++i) {
+    ASSERT_EQ(call(1, i, one.data(), &st1), 0) << name;
+    EXPECT_EQ(st[i], st1) << name << " element " << i;
+    EXPECT_EQ(0, std::memcmp(&batch[width * i], one.data(), width * sizeof(S))) << name << " element " << i;
+  }
+}
+
+/// SKIN-1, SKIN-2, EDGE-3, EDGE-5 .. EDGE-7, EDGE-9: the batches of skin_linear (where the table
+/// has it) and skin_dual_quaternion, which run their ordinary elements in SIMD lanes (dq's
+/// dlb_lanes.hpp, motor_pga's motor_lanes.hpp), give bit for bit and status for status what a
+/// one-element call gives, as dq_batches_give_the_element_bits; k = 1, 4 and 8 influences. Among
+/// ordinary influences (sizes 1/4 .. 4, translations and vertices in [-10, 10]) sit, spread over
+/// blocks and lanes by 7 i mod 29: a first weight 0 (the pivot moves), all weights 0, a weight -0,
+/// -1/2, NaN, +Inf, 1e30 or the largest finite; an influence scaled by 2^+-E beyond the ordinary
+/// range, zero, subnormal or NaN; one that is -q_0 (the hemisphere flip) or orthogonal to q_0
+/// exactly (EDGE-3's tie against the pivot, which the lanes' filter cannot decide) or at a dot
+/// so small and negative that only the exact sign sees the flip; a translation
+/// or a vertex that is Inf or NaN, a translation of max / 4 (finite: the lanes take it); large
+/// translations (the sum's DQ-4 projection may cancel).
+template <class S> void skin_batches_give_the_element_bits(const Ops<S>& ops) {
+  using Lim = std::numeric_limits<S>;
+  constexpr int E = std::is_same_v<S, float> ? 40 : 300;
+  constexpr std::size_t kCases = 61;  // 3 x 16 + 3 x 4 + 1
+  LawRng rng(62);
+  for (const std::size_t k : {std::size_t{1}, std::size_t{4}, std::size_t{8}}) {
+    std::vector<S> q(4 * k * kCases), t(3 * k * kCases), w(k * kCases), v(3 * kCases);
+    for (std::size_t i = 0; i < kCases; ++i) {
+      S* qi = &q[4 * k * i];
+      S* ti = &t[3 * k * i];
+      S* wi = &w[k * i];
+      S* vi = &v[3 * i];
+      for (std::size_t j = 0; j < k; ++j) {
+        const double size = rng.uniform(0.25, 4);
+        for (std::size_t c = 0; c < 4; ++c) qi[4 * j + c] = S(rng.uniform(-1, 1) * size);
+        for (std::size_t c = 0; c < 3; ++c) ti[3 * j + c] = S(rng.uniform(-10, 10));
+        wi[j] = S(rng.uniform(0, 1));
+      }
+      for (std::size_t c = 0; c < 3; ++c) vi[c] = S(rng.uniform(-10, 10));
+      S* ql = &qi[4 * (k - 1)];  // the last influence
+      S* tl = &ti[3 * (k - 1)];
+      switch ((7 * i) % 29) {
+        case 1: wi[0] = 0; break;
+        case 2: for (std::size_t j = 0; j < k; ++j) wi[j] = 0; break;
+        case 3: wi[k - 1] = S(-0.0); break;
+        case 4: wi[k - 1] = S(-0.5); break;
+        case 5: wi[k - 1] = Lim::quiet_NaN(); break;
+        case 6: wi[k - 1] = Lim::infinity(); break;
+        case 7: wi[k - 1] = S(1e30); break;
+        case 8: wi[0] = Lim::max(); break;
+        case 9: for (std::size_t c = 0; c < 4; ++c) ql[c] = std::ldexp(ql[c], E); break;
+        case 10: for (std::size_t c = 0; c < 4; ++c) ql[c] = std::ldexp(ql[c], -E); break;
+        case 11: for (std::size_t c = 0; c < 4; ++c) ql[c] = S(c % 2 ? -0.0 : 0.0); break;
+        case 12: ql[0] = Lim::denorm_min(), ql[1] = -S(0), ql[2] = 3 * Lim::denorm_min(), ql[3] = 0; break;
+        case 13: ql[2] = Lim::quiet_NaN(); break;
+        case 14: for (std::size_t c = 0; c < 4; ++c) ql[c] = -qi[c]; break;  // k = 1: q_0 itself negated
+        case 15: if (k > 1) ql[0] = -qi[1], ql[1] = qi[0], ql[2] = -qi[3], ql[3] = qi[2]; break;
+        case 16: if (k > 1) ql[0] = -qi[1], ql[1] = qi[0], ql[2] = -qi[3], ql[3] = qi[2], wi[0] = 0; break;  // tie, pivot 1
+        case 17: tl[1] = Lim::infinity(); break;
+        case 18: tl[0] = Lim::quiet_NaN(); break;
+        case 19: tl[2] = Lim::max() / 4; break;
+        case 20: vi[2] = -Lim::infinity(); break;
+        case 21: vi[0] = Lim::quiet_NaN(); break;
+        case 22: for (std::size_t j = 0; j < 3 * k; ++j) ti[j] = S(rng.uniform(-1, 1) * 1e6); break;
+        case 23: for (std::size_t c = 0; c < 4; ++c) ql[c] = std::ldexp(ql[c], -E / 2 - 8); break;  // |q|^2 underflows
+        case 24:  // q_0.q_last = -2^(3-p) exactly, within the filter's bound 2^(4-p): only the exact sign flips
+          if (k > 1) {
+            qi[0] = qi[1] = 1, qi[2] = qi[3] = 0;
+            ql[0] = 1, ql[1] = -1 - std::ldexp(S(1), 3 - Lim::digits), ql[2] = ql[3] = 0;
+          }
+          break;
+        default: break;
+      }
+    }
+    using Status = std::uint8_t*;
+    const char* const kn = k == 1 ? " k=1" : k == 4 ? " k=4" : " k=8";
+    if (ops.skin_linear != nullptr)
+      batch_matches_elements<S>((std::string("skin_linear") + kn).c_str(), kCases, 3,
+                                [&](std::size_t n, std::size_t i, S* o, Status st) {
+                                  return ops.skin_linear(n, k, &q[4 * k * i], &t[3 * k * i], &w[k * i], &v[3 * i], o, st);
+                                });
+    batch_matches_elements<S>((std::string("skin_dual_quaternion") + kn).c_str(), kCases, 3,
+                              [&](std::size_t n, std::size_t i, S* o, Status st) {
+                                return ops.skin_dual_quaternion(n, k, &q[4 * k * i], &t[3 * k * i], &w[k * i], &v[3 * i],
+                                                                o, st);
+                              });
+  }
+}
+
+/// AXIS-1, EDGE-6, EDGE-7: the batch of rotate_about_axis (SIMD lanes in dq and motor_pga) gives
+/// bit for bit and status for status what a one-element call gives, as
+/// dq_batches_give_the_element_bits. Among ordinary centres, axes, angles in [-7, 7] and points
+/// sit, spread over blocks and lanes: a zero axis (+0 and -0), a subnormal axis and axes scaled by
+/// 2^+-E (beyond the ordinary range, still valid), NaN and Inf in the centre, the axis, the angle
+/// and the point, angles of 0, -0, 1e6, 1e30 and the largest finite.
+template <class S> void axis_batch_gives_the_element_bits(const Ops<S>& ops) {
+  using Lim = std::numeric_limits<S>;
+  constexpr int E = std::is_same_v<S, float> ? 40 : 300;
+  constexpr std::size_t kCases = 61;
+  LawRng rng(63);
+  std::vector<S> c(3 * kCases), u(3 * kCases), angle(kCases), p(3 * kCases);
+  for (std::size_t i = 0; i < kCases; ++i) {
+    S* ci = &c[3 * i];
+    S* ui = &u[3 * i];
+    S* pi = &p[3 * i];
+    for (std::size_t j = 0; j < 3; ++j)
+      ci[j] = S(rng.uniform(-10, 10)), ui[j] = S(rng.uniform(-1, 1) * rng.uniform(0.25, 4)), pi[j] = S(rng.uniform(-10, 10));
+    angle[i] = S(rng.uniform(-7, 7));
+    switch ((7 * i) % 29) {
+      case 1: ui[0] = ui[1] = ui[2] = 0; break;
+      case 2: ui[0] = -S(0), ui[1] = 0, ui[2] = -S(0); break;
+      case 3: ui[0] = Lim::denorm_min(), ui[1] = 0, ui[2] = -2 * Lim::denorm_min(); break;
+      case 4: for (std::size_t j = 0; j < 3; ++j) ui[j] = std::ldexp(ui[j], E); break;
+      case 5: for (std::size_t j = 0; j < 3; ++j) ui[j] = std::ldexp(ui[j], -E); break;
+      case 6: ui[1] = Lim::quiet_NaN(); break;
+      case 7: ui[2] = Lim::infinity(); break;
+      case 8: ci[0] = Lim::quiet_NaN(); break;
+      case 9: ci[1] = -Lim::infinity(); break;
+      case 10: angle[i] = Lim::quiet_NaN(); break;
+      case 11: angle[i] = Lim::infinity(); break;
+      case 12: angle[i] = -Lim::infinity(); break;
+      case 13: angle[i] = 0; break;
+      case 14: angle[i] = -S(0); break;
+      case 15: angle[i] = S(1e6); break;
+      case 16: angle[i] = S(1e30); break;
+      case 17: angle[i] = -Lim::max(); break;
+      case 18: pi[2] = Lim::quiet_NaN(); break;
+      case 19: pi[0] = Lim::infinity(); break;
+      case 20: ci[0] = ci[1] = ci[2] = 0, pi[0] = -S(0); break;
+      case 21: ci[2] = Lim::max() / 4; break;  // finite: the lanes take it
+      default: break;
+    }
+  }
+  batch_matches_elements<S>("rotate_about_axis", kCases, 3, [&](std::size_t n, std::size_t i, S* o, std::uint8_t* st) {
+    return ops.rotate_about_axis(n, &c[3 * i], &u[3 * i], &angle[i], &p[3 * i], o, st);
+  });
 }
 
 }  // namespace rotorcert::testing::rigid_laws
