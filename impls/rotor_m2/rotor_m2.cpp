@@ -118,20 +118,8 @@ struct RotorM2 : rotorcert::rotor::RotorOps<S, rotorcert::rotor::Method2> {
   /// influence are ordinary and the vertex and translations finite.
   ROTORCERT_TARGET_CLONES_FLAT static int skin_linear_batch(std::size_t n, std::size_t k, const S* q, const S* t,
                                                            const S* w, const S* v, S* out, std::uint8_t* status) {
-    const auto checked = [&](std::size_t e) {
-      rotorcert::impl::detail::skin<&Base::skin_linear, S>(1, k, q + 4 * k * e, t + 3 * k * e, w + k * e, v + 3 * e,
-                                                           out + 3 * e, status + e);
-    };
-    if (k == 0 || k > kLaneInfluences)
-      return rotorcert::impl::detail::skin<&Base::skin_linear, S>(n, k, q, t, w, v, out, status);
-    runtime::in_lanes_or_checked<lanes::SkinLinearLanes>(
-        n, q, 4 * k, w, k,
-        [&](auto& l, const S* qq, const S* ww) {
-          const std::size_t first = std::size_t(ww - w) / k;
-          l.run(k, qq, t + 3 * k * first, ww, v + 3 * first);
-        },
-        runtime::copy_lane_outputs<3>(out, status), checked, checked);
-    return 0;
+    return runtime::skin_lanes_or_element<lanes::SkinLinearLanes, &Base::skin_linear, kLaneInfluences>(n, k, q, t, w, v,
+                                                                                                      out, status);
   }
   /// SLERP-2 batches: lanes where the inputs, log's bivector and exp's argument are ordinary.
   ROTORCERT_TARGET_CLONES_FLAT static int slerp_batch(std::size_t n, const S* a, const S* b, const S* t, S* out,
