@@ -541,6 +541,20 @@ struct ExpLanes {
   }
 };
 
+/// RotorOps::angle_of's arguments for lane l: |B| and s of R = s + B = Phi(q/|q|), where |q|^2
+/// is ordinary and |B|^2 ordinary or B exactly zero (norm3's own cases without scaling; it
+/// returns +0 for B = 0); returns whether they hold.
+template <class S, std::size_t L>
+[[gnu::always_inline]] inline bool angle_arguments_lane(const S (&x)[4][L], std::size_t l, S& n, S& s) {
+  const S n2q = norm2_lane(x, l);
+  const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2q));
+  const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12;
+  const bool no_plane = (r.e23 == 0) & (r.e31 == 0) & (r.e12 == 0);
+  const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
+  n = std::sqrt(n2), s = r.s;
+  return ordinary_q & (ordinary_b | no_plane);
+}
+
 /// AXANG-3 as RotorOps::to_angle computes it with Method2 where |q|^2 is ordinary and |B|^2 of
 /// R = s + B = Phi(q/|q|) is ordinary or B is exactly zero (norm3's own cases without scaling):
 /// 2 atan2(|B|, s), atan2 the element function's call, one lane at a time.
@@ -552,15 +566,7 @@ struct ToAngleLanes {
   void run(const S* q, const S* /*unused*/) {
     S x[4][L], n[L], s[L];
     load_lanes(q, x);
-    for (std::size_t l = 0; l < L; ++l) {
-      const S n2q = norm2_lane(x, l);
-      const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2q));
-      const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12;
-      const bool no_plane = (r.e23 == 0) & (r.e31 == 0) & (r.e12 == 0);  // norm3 returns +0
-      const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
-      ok[l] = Flag(ordinary_q & (ordinary_b | no_plane));
-      n[l] = std::sqrt(n2), s[l] = r.s;
-    }
+    for (std::size_t l = 0; l < L; ++l) ok[l] = Flag(angle_arguments_lane(x, l, n[l], s[l]));
     for (std::size_t l = 0; l < L; ++l) out[0][l] = S(2) * atan2_in_binary64(n[l], s[l]);
   }
 };
@@ -577,16 +583,10 @@ struct ToAxisAngleLanes {
     S x[4][L], n[L], s[L];
     load_lanes(q, x);
     for (std::size_t l = 0; l < L; ++l) {
-      const S n2q = norm2_lane(x, l);
-      const Rotor3<S> r = unit_rotor_lane(x, l, std::sqrt(n2q));
-      const S n2 = r.e23 * r.e23 + r.e31 * r.e31 + r.e12 * r.e12;
+      const bool angle_ok = angle_arguments_lane(x, l, n[l], s[l]);
       const S v2 = x[0][l] * x[0][l] + x[1][l] * x[1][l] + x[2][l] * x[2][l];
-      const bool no_plane = (r.e23 == 0) & (r.e31 == 0) & (r.e12 == 0);  // norm3 returns +0
       const bool no_vector = (x[0][l] == 0) & (x[1][l] == 0) & (x[2][l] == 0);
-      const bool ordinary_q = runtime::is_ordinary_square_lane(n2q), ordinary_b = runtime::is_ordinary_square_lane(n2);
-      const bool ordinary_v = runtime::is_ordinary_square_lane(v2);
-      ok[l] = Flag(ordinary_q & (ordinary_b | no_plane) & (ordinary_v | no_vector));
-      n[l] = std::sqrt(n2), s[l] = r.s;
+      ok[l] = Flag(angle_ok & (runtime::is_ordinary_square_lane(v2) | no_vector));
       const S nv = std::sqrt(v2);
       out[1][l] = no_vector ? S(0) : x[0][l] / nv;
       out[2][l] = no_vector ? S(0) : x[1][l] / nv;
