@@ -29,6 +29,7 @@
 #include <limits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/axis_angle_lanes.hpp>
 #include <rotorcert/runtime/lane_store.hpp>
 #include <rotorcert/runtime/lane_weights.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
@@ -445,44 +446,19 @@ struct RotateAboutAxisLanes {
   Flag ok[L];
 
   void run(const S* c, const S* u, const S* angle, const S* p) {
-    constexpr S kMax = std::numeric_limits<S>::max();
-    // Copied into lane arrays first: read in place, this loop does not vectorise (GCC 12).
-    S uu[3][L], cc[3][L], pp[3][L], ang[L], half[L], axis[3][L];
+    runtime::AxisAngleLanes<S, L> in;
+    in.load(c, u, angle, p);
     for (std::size_t l = 0; l < L; ++l) {
-      for (std::size_t j = 0; j < 3; ++j) uu[j][l] = u[3 * l + j], cc[j][l] = c[3 * l + j], pp[j][l] = p[3 * l + j];
-      ang[l] = angle[l];
-    }
-    for (std::size_t l = 0; l < L; ++l) {
-      const S ux = uu[0][l], uy = uu[1][l], uz = uu[2][l], a = ang[l];
-      const S n2 = ux * ux + uy * uy + uz * uz + S(0) * S(0);  // dot() of the quaternion (u, 0)
-      const bool ordinary = runtime::is_ordinary_square_lane(n2);
-      const bool finite_c = runtime::finite3_lane(cc[0][l], cc[1][l], cc[2][l]);
-      const bool finite_p = runtime::finite3_lane(pp[0][l], pp[1][l], pp[2][l]);
-      const bool finite_a = (a <= kMax) & (a >= -kMax);
-      ok[l] = Flag(ordinary & finite_c & finite_p & finite_a);
-      const S n = std::sqrt(n2);
-      axis[0][l] = ux / n;
-      axis[1][l] = uy / n;
-      axis[2][l] = uz / n;  // (its w, 0 / n, is not used)
-      half[l] = a / S(2);
-    }
-    // The element function's own libm calls, lane by lane (no vector sin or cos gives its bits), on
-    // 0 where the lane is not ok, so that they see no Inf or NaN (no errno, no FE_INVALID); the
-    // select sits here, as a select on a lane flag in the loop above keeps it from vectorising.
-    S sn[L], cs[L];
-    for (std::size_t l = 0; l < L; ++l) {
-      const S h = ok[l] != 0 ? half[l] : S(0);
-      sn[l] = std::sin(h), cs[l] = std::cos(h);
-    }
-    for (std::size_t l = 0; l < L; ++l) {
-      const S qx = sn[l] * axis[0][l], qy = sn[l] * axis[1][l], qz = sn[l] * axis[2][l], qw = cs[l];
-      const S cx = cc[0][l], cy = cc[1][l], cz = cc[2][l];
+      ok[l] = in.ok[l];
+      const S sn = in.sin_half[l];
+      const S qx = sn * in.axis[0][l], qy = sn * in.axis[1][l], qz = sn * in.axis[2][l], qw = in.cos_half[l];
+      const S cx = in.centre[0][l], cy = in.centre[1][l], cz = in.centre[2][l];
       // c q - q c of the pure quaternion c, every product term included (signed zeros as dq.cpp's).
       S ax, ay, az, aw, bx, by, bz, bw;
       product_lane(cx, cy, cz, S(0), qx, qy, qz, qw, ax, ay, az, aw);
       product_lane(qx, qy, qz, qw, cx, cy, cz, S(0), bx, by, bz, bw);
       const S sigma[8] = {qx, qy, qz, qw, S(0.5) * (ax - bx), S(0.5) * (ay - by), S(0.5) * (az - bz), S(0.5) * (aw - bw)};
-      moved_point_lane(sigma, pp[0][l], pp[1][l], pp[2][l], l, out);
+      moved_point_lane(sigma, in.point[0][l], in.point[1][l], in.point[2][l], l, out);
     }
   }
 };

@@ -27,6 +27,7 @@
 #include <limits>
 
 #include <rotorcert/runtime/exact_sign.hpp>
+#include <rotorcert/runtime/axis_angle_lanes.hpp>
 #include <rotorcert/runtime/lane_store.hpp>
 #include <rotorcert/runtime/lane_weights.hpp>
 #include <rotorcert/runtime/ordinary_range.hpp>
@@ -360,45 +361,22 @@ struct RotateAboutAxisLanes {
   Flag ok[L];
 
   void run(const S* c, const S* u, const S* angle, const S* p) {
-    constexpr S kMax = std::numeric_limits<S>::max();
-    // Copied into lane arrays first: read in place, this loop does not vectorise (GCC 12).
-    S uu[3][L], cc[3][L], pp[3][L], ang[L], half[L], axis[3][L];
+    runtime::AxisAngleLanes<S, L> in;
+    in.load(c, u, angle, p);
     for (std::size_t l = 0; l < L; ++l) {
-      for (std::size_t j = 0; j < 3; ++j) uu[j][l] = u[3 * l + j], cc[j][l] = c[3 * l + j], pp[j][l] = p[3 * l + j];
-      ang[l] = angle[l];
-    }
-    for (std::size_t l = 0; l < L; ++l) {
-      const S ux = uu[0][l], uy = uu[1][l], uz = uu[2][l], a = ang[l];
-      const S n2 = ux * ux + uy * uy + uz * uz + S(0) * S(0);  // unit_rotor() of the quaternion (u, 0)
-      const bool ordinary = runtime::is_ordinary_square_lane(n2);
-      const bool finite_c = runtime::finite3_lane(cc[0][l], cc[1][l], cc[2][l]);
-      const bool finite_p = runtime::finite3_lane(pp[0][l], pp[1][l], pp[2][l]);
-      const bool finite_a = (a <= kMax) & (a >= -kMax);
-      ok[l] = Flag(ordinary & finite_c & finite_p & finite_a);
-      const S n = std::sqrt(n2);
-      axis[0][l] = -(ux / n);  // pga::rotor(): (e23, e31, e12) = -(x, y, z)
-      axis[1][l] = -(uy / n);
-      axis[2][l] = -(uz / n);
-      half[l] = a / S(2);
-    }
-    // The element function's own libm calls, lane by lane (no vector sin or cos gives its bits), on
-    // 0 where the lane is not ok, so that they see no Inf or NaN (no errno, no FE_INVALID); the
-    // select sits here, as a select on a lane flag in the loop above keeps it from vectorising.
-    S sn[L], cs[L];
-    for (std::size_t l = 0; l < L; ++l) {
-      const S h = ok[l] != 0 ? half[l] : S(0);
-      sn[l] = std::sin(h), cs[l] = std::cos(h);
-    }
-    for (std::size_t l = 0; l < L; ++l) {
-      const S r[8] = {cs[l], sn[l] * axis[0][l], sn[l] * axis[1][l], sn[l] * axis[2][l], S(0), S(0), S(0), S(0)};
-      const S cx = cc[0][l], cy = cc[1][l], cz = cc[2][l];
+      ok[l] = in.ok[l];
+      // pga::rotor(): (e23, e31, e12) = -(x, y, z)/|u| (an exact negation), scaled by sin h.
+      const S sn = in.sin_half[l];
+      const S r[8] = {in.cos_half[l], sn * -in.axis[0][l], sn * -in.axis[1][l], sn * -in.axis[2][l],
+                      S(0),           S(0),                S(0),                S(0)};
+      const S cx = in.centre[0][l], cy = in.centre[1][l], cz = in.centre[2][l];
       // pga::translator(c) and its pga::reverse().
       const S tc[8] = {S(1), S(0), S(0), S(0), -cx / S(2), -cy / S(2), -cz / S(2), S(0)};
       const S tc_reverse[8] = {tc[0], -tc[1], -tc[2], -tc[3], -tc[4], -tc[5], -tc[6], tc[7]};
       S tr[8], m[8];
       product_lane(tc, r, tr);
       product_lane(tr, tc_reverse, m);
-      sandwich_lane(m, pp[0][l], pp[1][l], pp[2][l], l, out);
+      sandwich_lane(m, in.point[0][l], in.point[1][l], in.point[2][l], l, out);
     }
   }
 };
